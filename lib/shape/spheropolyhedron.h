@@ -1,0 +1,57 @@
+// A convex spheropolyhedron: a convex polyhedral core dilated by a sphere of radius r.
+//
+// Stored in its body frame: origin at the centre of mass of the dilated shape, axes along
+// its principal axes of inertia. One vertex = a sphere, two vertices = a spherocylinder,
+// four or more non-coplanar vertices = a rounded polyhedron.
+#pragma once
+
+#include "math/types.h"
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace nscd {
+
+// Any problem with a shape's definition (degenerate points, negative radius, ...).
+class ShapeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Face {
+  std::vector<int> vertices;    // indices into Spheropolyhedron::vertices, counter-clockwise seen from outside
+  Vec3 normal;                  // outward unit normal
+  double offset;                // normal.dot(x) == offset for every x on the face plane
+};
+
+struct Spheropolyhedron {
+  std::vector<Vec3> vertices;              // core vertices, body frame
+  std::vector<std::array<int, 2>> edges;   // each core edge once, vertex indices
+  std::vector<Face> faces;                 // core faces; coplanar hull facets merged
+  double radius = 0.0;                     // rounding (dilation) radius r >= 0
+
+  // Mass properties of the dilated shape at unit density, in the body frame.
+  double volume = 0.0;
+  Vec3 principal_inertia = Vec3::Zero();   // diagonal of the inertia tensor per unit density
+
+  // Largest distance from the centre of mass to the dilated surface.
+  double bounding_radius = 0.0;
+
+  // Transform that took the input points into the body frame:
+  // body = input_rotation.conjugate() * (input - input_centroid).
+  Vec3 input_centroid = Vec3::Zero();
+  Quat input_rotation = Quat::Identity();
+
+  bool is_sphere() const { return vertices.size() == 1; }
+  bool is_spherocylinder() const { return vertices.size() == 2; }
+  bool is_polyhedron() const { return vertices.size() >= 4; }
+};
+
+// Builds the shape from a cloud of points (any order, interior points allowed; the
+// convex hull is taken). Throws ShapeError for: no points, radius < 0, radius == 0 with
+// fewer than 4 non-coplanar points, 3+ points that are collinear or coplanar (flat).
+Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double radius);
+
+}    // namespace nscd
