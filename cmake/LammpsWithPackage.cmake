@@ -1,0 +1,66 @@
+# Builds LAMMPS (unpatched) with our package in src/ compiled into it.
+#
+# Our style headers are appended to the GLOBAL properties that LAMMPS' own
+# StyleHeaderUtils.cmake turns into style_*.h, before LAMMPS' cmake/ directory is added;
+# our sources are then added to the `lammps` target. Result: ${CMAKE_BINARY_DIR}/lmp.
+
+set(LAMMPS_SOURCE_DIR "" CACHE PATH
+    "LAMMPS source tree (the directory holding cmake/ and src/); empty = fetch Debian's")
+set(NSCD_CACHE_DIR "$ENV{HOME}/.cache/nscd-lammps" CACHE PATH
+    "Where tools/fetch_lammps.sh keeps the fetched LAMMPS source")
+
+if(NOT LAMMPS_SOURCE_DIR)
+  message(STATUS "No LAMMPS_SOURCE_DIR given: fetching Debian's lammps source into ${NSCD_CACHE_DIR}")
+  execute_process(
+    COMMAND bash ${PROJECT_SOURCE_DIR}/tools/fetch_lammps.sh ${NSCD_CACHE_DIR}
+    OUTPUT_VARIABLE _fetched OUTPUT_STRIP_TRAILING_WHITESPACE
+    RESULT_VARIABLE _fetch_rc)
+  if(NOT _fetch_rc EQUAL 0 OR NOT EXISTS "${_fetched}/cmake/CMakeLists.txt")
+    message(FATAL_ERROR "Could not fetch the LAMMPS source (tools/fetch_lammps.sh exit ${_fetch_rc}). "
+                        "Pass an existing tree with -DLAMMPS_SOURCE_DIR=/path/to/lammps")
+  endif()
+  set(LAMMPS_SOURCE_DIR "${_fetched}" CACHE PATH "LAMMPS source tree" FORCE)
+endif()
+if(EXISTS "${LAMMPS_SOURCE_DIR}/../cmake/CMakeLists.txt" AND NOT EXISTS "${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt")
+  get_filename_component(LAMMPS_SOURCE_DIR "${LAMMPS_SOURCE_DIR}/.." ABSOLUTE)   # user gave .../src
+endif()
+if(NOT EXISTS "${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt")
+  message(FATAL_ERROR "LAMMPS_SOURCE_DIR=${LAMMPS_SOURCE_DIR} has no cmake/CMakeLists.txt: "
+                      "point it at the top of a LAMMPS source tree")
+endif()
+set(NSCD_LAMMPS_TREE "${LAMMPS_SOURCE_DIR}")
+message(STATUS "LAMMPS source tree: ${NSCD_LAMMPS_TREE}")
+
+# LAMMPS settings this package relies on (users may still add more packages with -DPKG_...)
+set(BUILD_MPI ON CACHE BOOL "Build LAMMPS with MPI")
+set(PKG_MOLECULE ON CACHE BOOL "Bonds and angles (wire)")
+set(PKG_BODY ON CACHE BOOL "Soft-contact spheropolyhedra, for comparison")
+set(LAMMPS_EXCEPTIONS ON CACHE BOOL "error->all throws; tests check messages")
+set(ENABLE_TESTING OFF CACHE BOOL "LAMMPS' own tests download googletest: keep off")
+set(WITH_JPEG OFF CACHE BOOL "")
+set(WITH_PNG OFF CACHE BOOL "")
+set(WITH_FFMPEG OFF CACHE BOOL "")
+find_package(MPI REQUIRED)
+
+# Register our styles with LAMMPS' style-header generator.
+file(GLOB NSCD_PACKAGE_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*.h)
+file(GLOB NSCD_PACKAGE_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*.cpp)
+foreach(_header ${NSCD_PACKAGE_HEADERS})
+  file(STRINGS ${_header} _style_line REGEX "^(Atom|Pair|Fix|Bond|Angle|Compute|Command|Dump)Style\\(")
+  if(_style_line MATCHES "^Atom")
+    set(_prop ATOM_VEC)
+  elseif(_style_line MATCHES "^([A-Z][a-z]+)Style")
+    string(TOUPPER "${CMAKE_MATCH_1}" _prop)
+  else()
+    continue()
+  endif()
+  set_property(GLOBAL APPEND PROPERTY ${_prop} ${_header})
+endforeach()
+
+add_subdirectory(${NSCD_LAMMPS_TREE}/cmake ${CMAKE_BINARY_DIR}/lammps)
+
+target_sources(lammps PRIVATE ${NSCD_PACKAGE_SOURCES})
+target_include_directories(lammps PRIVATE ${PROJECT_SOURCE_DIR}/src)
+target_link_libraries(lammps PUBLIC nscd_core)
+set_target_properties(lammps PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON)
+set_target_properties(lmp PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})

@@ -1,0 +1,192 @@
+/* atom_style spheropolyhedron: LAMMPS glue around the shape library of lib/shape. */
+
+#include "atom_vec_spheropolyhedron.h"
+
+#include "atom.h"
+#include "atom_vec_hybrid.h"
+#include "error.h"
+#include "memory.h"
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *const kStyleName = "spheropolyhedron";
+const char *const kLibraryArg = "library";    // followed by the serialised shape library
+}    // namespace
+
+AtomVecSpheropolyhedron::AtomVecSpheropolyhedron(LAMMPS *lmp) :
+    AtomVec(lmp), shape(nullptr), quat(nullptr), inertia(nullptr), radius(nullptr),
+    rmass(nullptr), omega(nullptr), torque(nullptr)
+{
+  mass_type = PER_ATOM;
+  molecular = Atom::ATOMIC;
+  atom->rmass_flag = atom->radius_flag = atom->omega_flag = atom->torque_flag = 1;
+
+  point_peratom("shape", &shape, Atom::INT, 0);
+  point_peratom("quat", &quat, Atom::DOUBLE, 4);
+  point_peratom("inertia", &inertia, Atom::DOUBLE, 3);
+
+  // Ghosts need shape and orientation for contact geometry, so quat goes every step;
+  // the solver exchanges velocities itself, comm_vel is for `comm_modify vel yes`.
+  fields_grow = (char *) "shape quat inertia radius rmass omega torque";
+  fields_copy = (char *) "shape quat inertia radius rmass omega";
+  fields_comm = (char *) "quat";
+  fields_comm_vel = (char *) "quat omega";
+  fields_reverse = (char *) "torque";
+  fields_border = (char *) "shape quat inertia radius rmass";
+  fields_border_vel = (char *) "shape quat inertia radius rmass omega";
+  fields_exchange = (char *) "shape quat inertia radius rmass omega";
+  fields_restart = (char *) "shape quat inertia radius rmass omega";
+  fields_create = (char *) "shape quat inertia radius rmass omega";
+  fields_data_atom = (char *) "id type shape rmass x quat";
+  fields_data_vel = (char *) "id v omega";
+}
+
+AtomVecSpheropolyhedron::~AtomVecSpheropolyhedron()
+{
+  memory->destroy(shape);
+  memory->destroy(quat);
+  memory->destroy(inertia);
+}
+
+/* Registers one of this style's own per-atom arrays with Atom. `atom_style` followed by
+   `read_restart` constructs the style twice: the second instance re-points the entry. */
+void AtomVecSpheropolyhedron::point_peratom(const char *name, void *address, int datatype,
+                                            int cols, int threadflag)
+{
+  for (int i = 0; i < atom->nperatom; i++)
+    if (strcmp(atom->peratom[i].name, name) == 0) {
+      atom->peratom[i].address = address;
+      return;
+    }
+  atom->add_peratom(name, address, datatype, cols, threadflag);
+}
+
+/* Arguments: none, or `library <text>` as written by record_library_in_style_args() into
+   restart files (and used by `replicate`). Users load shapes with the `shapes` command. */
+void AtomVecSpheropolyhedron::process_args(int narg, char **arg)
+{
+  if (narg == 2 && strcmp(arg[0], kLibraryArg) == 0) {
+    try {
+      library = nscd::ShapeLibrary::deserialize(arg[1]);
+    } catch (std::exception &e) {
+      error->all(FLERR, "atom_style spheropolyhedron: stored shape library is unreadable ({}); "
+                 "the restart file is damaged or from another version", e.what());
+    }
+  } else if (narg != 0) {
+    error->all(FLERR, "Illegal atom_style spheropolyhedron command: it takes no arguments "
+               "(load shapes with 'shapes read FILE' or 'shapes random ...')");
+  }
+  setup_fields();
+}
+
+void AtomVecSpheropolyhedron::grow_pointers()
+{
+  radius = atom->radius;
+  rmass = atom->rmass;
+  omega = atom->omega;
+  torque = atom->torque;
+}
+
+void AtomVecSpheropolyhedron::create_atom_post(int i)
+{
+  quat[i][0] = 1.0;
+  set_shape(i, 0, 1.0);
+}
+
+void AtomVecSpheropolyhedron::data_atom_post(int i)
+{
+  check_shape_id(i);
+  if (!(rmass[i] > 0.0) || !std::isfinite(rmass[i]))
+    error->one(FLERR, "Atoms section: atom ID {} has mass {}; the mass must be positive",
+               atom->tag[i], rmass[i]);
+  double norm = 0.0;
+  for (int k = 0; k < 4; k++) norm += quat[i][k] * quat[i][k];
+  norm = std::sqrt(norm);
+  if (!(norm > 1e-10) || !std::isfinite(norm))
+    error->one(FLERR, "Atoms section: atom ID {} has quaternion ({} {} {} {}) of zero length; "
+               "use 1 0 0 0 for no rotation", atom->tag[i], quat[i][0], quat[i][1], quat[i][2],
+               quat[i][3]);
+  for (int k = 0; k < 4; k++) quat[i][k] /= norm;
+  set_shape(i, shape[i], rmass[i]);
+  omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
+  torque[i][0] = torque[i][1] = torque[i][2] = 0.0;
+}
+
+void AtomVecSpheropolyhedron::check_shape_id(int i) const
+{
+  if (shape[i] < 0 || shape[i] > library.size())
+    error->one(FLERR, "Atom ID {} has shape id {}, but the shape library holds {} shape(s); "
+               "load the shapes ('shapes read FILE') before read_data, or use 0 for a point",
+               atom->tag[i], shape[i], library.size());
+}
+
+void AtomVecSpheropolyhedron::set_shape(int i, int shape_id, double mass)
+{
+  shape[i] = shape_id;
+  check_shape_id(i);
+  rmass[i] = mass;
+  if (shape_id == 0) {
+    inertia[i][0] = inertia[i][1] = inertia[i][2] = 0.0;
+    radius[i] = 0.0;
+    return;
+  }
+  const nscd::Spheropolyhedron &s = library.shape(shape_id);
+  const double density = mass / s.volume;
+  for (int k = 0; k < 3; k++) inertia[i][k] = density * s.principal_inertia[k];
+  radius[i] = s.bounding_radius;
+}
+
+void AtomVecSpheropolyhedron::add_shapes(const nscd::ShapeLibrary &more)
+{
+  library.append(more);
+  record_library_in_style_args();
+}
+
+/* The restart file stores the atom style's arguments; putting the library there makes
+   restarts (and `replicate`) carry their shapes. Inside `atom_style hybrid` the hybrid's
+   own argument list is the one written, so our slice of it is replaced. */
+void AtomVecSpheropolyhedron::record_library_in_style_args()
+{
+  const std::string text = library.serialize();
+  AtomVec *top = atom->avec;
+  std::vector<std::string> args;
+  if (top == this) {
+    args = {kLibraryArg, text};
+  } else {
+    auto hybrid = dynamic_cast<AtomVecHybrid *>(top);
+    if (!hybrid) error->all(FLERR, "atom_style spheropolyhedron: unexpected owning atom style");
+    auto is_keyword = [hybrid](const char *word) {
+      for (int k = 0; k < hybrid->nstyles; k++)
+        if (strcmp(word, hybrid->keywords[k]) == 0) return true;
+      return false;
+    };
+    for (int a = 0; a < top->nargcopy; a++) {
+      args.emplace_back(top->argcopy[a]);
+      if (strcmp(top->argcopy[a], kStyleName) != 0) continue;
+      while (a + 1 < top->nargcopy && !is_keyword(top->argcopy[a + 1])) a++;
+      args.emplace_back(kLibraryArg);
+      args.push_back(text);
+    }
+  }
+  std::vector<char *> argv;
+  for (auto &s : args) argv.push_back(&s[0]);
+  for (int a = 0; a < top->nargcopy; a++) delete[] top->argcopy[a];
+  delete[] top->argcopy;
+  top->nargcopy = 0;
+  top->argcopy = nullptr;
+  top->store_args((int) argv.size(), argv.data());
+}
+
+AtomVecSpheropolyhedron *AtomVecSpheropolyhedron::find(LAMMPS *lmp, const char *caller)
+{
+  AtomVec *avec = lmp->atom->atom_style ? lmp->atom->style_match(kStyleName) : nullptr;
+  if (!avec)
+    lmp->error->all(FLERR, "{} needs atom_style spheropolyhedron (alone or inside atom_style "
+                    "hybrid); define it before this command", caller);
+  return static_cast<AtomVecSpheropolyhedron *>(avec);
+}

@@ -1,0 +1,66 @@
+/* atom_style spheropolyhedron: rigid convex spheropolyhedra (grains) as LAMMPS atoms.
+
+   Per atom: shape id into the shape library (0 = a point, e.g. a wire node), orientation
+   quaternion (body -> world, w x y z), angular velocity (world frame), torque, mass,
+   principal moments of inertia (body frame) and the bounding radius used for
+   neighbour lists and ghost cutoffs. The shape library lives in this object; it is
+   stored in restart files as this style's arguments, so a restart is self-contained.
+   See doc/atom_style_spheropolyhedron.md. */
+
+#ifdef ATOM_CLASS
+// clang-format off
+AtomStyle(spheropolyhedron,AtomVecSpheropolyhedron);
+// clang-format on
+#else
+
+#ifndef LMP_ATOM_VEC_SPHEROPOLYHEDRON_H
+#define LMP_ATOM_VEC_SPHEROPOLYHEDRON_H
+
+#include "atom_vec.h"
+#include "shape/shape_library.h"
+
+#include <string>
+
+namespace LAMMPS_NS {
+
+class AtomVecSpheropolyhedron : public AtomVec {
+ public:
+  AtomVecSpheropolyhedron(class LAMMPS *);
+  ~AtomVecSpheropolyhedron() override;
+  void process_args(int, char **) override;
+
+  void grow_pointers() override;
+  void create_atom_post(int) override;
+  void data_atom_post(int) override;
+
+  // The atom style instance of this run (also inside atom_style hybrid), or an error
+  // naming the missing `atom_style spheropolyhedron` when there is none.
+  static AtomVecSpheropolyhedron *find(class LAMMPS *, const char *caller);
+
+  const nscd::ShapeLibrary &shapes() const { return library; }
+  // Appends shapes and records the whole library in the atom style's arguments.
+  void add_shapes(const nscd::ShapeLibrary &more);
+
+  // Gives atom i shape `shape_id` (0 = point) with the given mass; sets inertia and radius.
+  void set_shape(int i, int shape_id, double mass);
+
+  int *shape;           // shape id, 1..N; 0 = point mass (no shape)
+  double **quat;        // orientation, body -> world, (w, x, y, z)
+  double **inertia;     // principal moments of inertia, body frame
+  double *radius;       // bounding radius (centre of mass to farthest surface point)
+  double *rmass;
+  double **omega;       // angular velocity, world frame
+  double **torque;
+
+ private:
+  nscd::ShapeLibrary library;
+
+  void point_peratom(const char *name, void *address, int datatype, int cols, int threadflag = 0);
+  void record_library_in_style_args();
+  void check_shape_id(int i) const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

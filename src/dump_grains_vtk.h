@@ -1,0 +1,49 @@
+/* dump grains/vtk: one legacy-VTK polydata file per snapshot with the true shape of every
+   grain (polyhedral cores as polygons; spheres and spherocylinders as tessellated
+   surfaces), for ParaView/VisIt. See doc/dump_grains_vtk.md. */
+
+#ifdef DUMP_CLASS
+// clang-format off
+DumpStyle(grains/vtk,DumpGrainsVTK);
+// clang-format on
+#else
+
+#ifndef LMP_DUMP_GRAINS_VTK_H
+#define LMP_DUMP_GRAINS_VTK_H
+
+#include "dump.h"
+
+#include <map>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class DumpGrainsVTK : public Dump {
+ public:
+  DumpGrainsVTK(class LAMMPS *, int, char **);
+
+ protected:
+  void init_style() override;
+  void write_header(bigint) override;
+  void pack(tagint *) override;
+  void write_data(int, double *) override;
+
+ private:
+  struct Mesh {    // a shape's surface for display, body frame
+    std::vector<double> points;                 // x y z ...
+    std::vector<std::vector<int>> polygons;
+  };
+  class AtomVecSpheropolyhedron *avec = nullptr;
+  std::map<int, Mesh> meshes;          // by shape id, built on first use
+  std::vector<double> snapshot;        // rows gathered on the writing rank
+  bigint expected_rows = 0;
+  bigint timestep_of_snapshot = 0;
+
+  const Mesh &mesh_of(int shape_id);
+  void write_file();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

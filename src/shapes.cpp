@@ -1,0 +1,267 @@
+/* The `shapes` command. Shape geometry and the generator live in lib/shape; this file
+   parses the deck and moves shapes onto atoms. */
+
+#include "shapes.h"
+
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "group.h"
+#include "utils.h"
+
+#include "shape/random_grain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Per-atom random numbers from (seed, atom ID, stream): the same on any number of ranks.
+double hashed_uniform(std::uint64_t seed, std::uint64_t tag, std::uint64_t stream)
+{
+  std::uint64_t z = seed * 0x9E3779B97F4A7C15ULL ^ (tag + 0x632BE59BD9B4E019ULL * (stream + 1));
+  for (int round = 0; round < 2; round++) {    // splitmix64 finaliser, twice
+    z += 0x9E3779B97F4A7C15ULL;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    z ^= z >> 31;
+  }
+  return (z >> 11) * 0x1.0p-53;    // [0, 1)
+}
+
+// Uniformly random rotation (Shoemake 1992) from three uniform numbers.
+void random_quaternion(double u1, double u2, double u3, double q[4])
+{
+  const double two_pi = 6.283185307179586;
+  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+  q[0] = b * std::cos(two_pi * u3);
+  q[1] = a * std::sin(two_pi * u2);
+  q[2] = a * std::cos(two_pi * u2);
+  q[3] = b * std::sin(two_pi * u3);
+}
+
+}    // namespace
+
+void Shapes::command(int narg, char **arg)
+{
+  if (narg < 1)
+    error->all(FLERR, "Illegal shapes command: expected read, random, write, info or assign");
+  avec = AtomVecSpheropolyhedron::find(lmp, "shapes");
+  const std::string what = arg[0];
+  if (what == "read") read(narg - 1, arg + 1);
+  else if (what == "random") random(narg - 1, arg + 1);
+  else if (what == "write") write(narg - 1, arg + 1);
+  else if (what == "info") info(narg - 1, arg + 1);
+  else if (what == "assign") assign(narg - 1, arg + 1);
+  else
+    error->all(FLERR, "Illegal shapes command: unknown keyword '{}' (expected read, random, "
+               "write, info or assign)", what);
+}
+
+/* shapes read FILE : every rank parses the file, so every rank holds the same library. */
+void Shapes::read(int narg, char **arg)
+{
+  if (narg != 1) error->all(FLERR, "Illegal shapes read command: expected 'shapes read FILE'");
+  nscd::ShapeLibrary more;
+  try {
+    more.read_file(arg[0]);
+  } catch (std::exception &e) {
+    error->all(FLERR, "shapes read: {}", e.what());
+  }
+  const int first = avec->shapes().size() + 1;
+  avec->add_shapes(more);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "shapes read: {} shape(s) from {}, ids {}..{}\n", more.size(), arg[0],
+                   first, avec->shapes().size());
+}
+
+/* shapes random N seed S [vertices NMIN NMAX] [size DMIN DMAX] [axes B C] [radius R] */
+void Shapes::random(int narg, char **arg)
+{
+  if (narg < 3 || strcmp(arg[1], "seed") != 0)
+    error->all(FLERR, "Illegal shapes random command: expected 'shapes random N seed SEED "
+               "[vertices NMIN NMAX] [size DMIN DMAX] [axes B/A C/A] [radius R]'");
+  const int count = utils::inumeric(FLERR, arg[0], false, lmp);
+  const bigint seed = utils::bnumeric(FLERR, arg[2], false, lmp);
+  if (count <= 0) error->all(FLERR, "shapes random: count {} must be positive", count);
+  nscd::RandomGrainParams params;
+  for (int iarg = 3; iarg < narg;) {
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg) error->all(FLERR, "shapes random: keyword '{}' needs {} value(s)", key, n);
+    };
+    if (key == "vertices") {
+      need(2);
+      params.min_vertices = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      params.max_vertices = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
+      iarg += 3;
+    } else if (key == "size") {
+      need(2);
+      params.min_diameter = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      params.max_diameter = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      iarg += 3;
+    } else if (key == "axes") {
+      need(2);
+      params.ratio_b = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      params.ratio_c = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      iarg += 3;
+    } else if (key == "radius") {
+      need(1);
+      params.radius = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "shapes random: unknown keyword '{}' (expected vertices, size, axes, "
+                 "radius)", key);
+    }
+  }
+  nscd::ShapeLibrary more;
+  try {
+    nscd::add_random_grains(more, params, count, (std::uint64_t) seed);
+  } catch (std::exception &e) {
+    error->all(FLERR, "shapes random: {}", e.what());
+  }
+  const int first = avec->shapes().size() + 1;
+  avec->add_shapes(more);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "shapes random: {} grain shape(s), ids {}..{}\n", count, first,
+                   avec->shapes().size());
+}
+
+/* shapes write FILE : rank 0 writes the library (body frame) in the text format. */
+void Shapes::write(int narg, char **arg)
+{
+  if (narg != 1) error->all(FLERR, "Illegal shapes write command: expected 'shapes write FILE'");
+  if (comm->me != 0) return;
+  std::ofstream out(arg[0]);
+  if (!out) error->one(FLERR, "shapes write: cannot open file {} for writing", arg[0]);
+  avec->shapes().write(out);
+  if (!out) error->one(FLERR, "shapes write: writing {} failed", arg[0]);
+}
+
+/* shapes info : one line per shape in the log. */
+void Shapes::info(int narg, char ** /*arg*/)
+{
+  if (narg != 0) error->all(FLERR, "Illegal shapes info command: it takes no arguments");
+  if (comm->me != 0) return;
+  const nscd::ShapeLibrary &lib = avec->shapes();
+  std::string text = fmt::format("shapes info: {} shape(s)\n  id vertices faces radius "
+                                 "volume bounding_radius name\n", lib.size());
+  for (int id = 1; id <= lib.size(); id++) {
+    const nscd::Spheropolyhedron &s = lib.shape(id);
+    text += fmt::format("  {} {} {} {:.6g} {:.6g} {:.6g} {}\n", id, s.vertices.size(),
+                        s.faces.size(), s.radius, s.volume, s.bounding_radius, lib.name(id));
+  }
+  utils::logmesg(lmp, text);
+}
+
+/* shapes assign GROUP [shape I | shape random IMIN IMAX SEED] [density RHO | mass M]
+                       [orient random SEED | orient quat W X Y Z] */
+void Shapes::assign(int narg, char **arg)
+{
+  if (narg < 2)
+    error->all(FLERR, "Illegal shapes assign command: expected 'shapes assign GROUP keyword "
+               "values ...'");
+  if (atom->natoms == 0 && comm->me == 0)
+    error->warning(FLERR, "shapes assign: there are no atoms yet (create them first)");
+  const int igroup = group->find(arg[0]);
+  if (igroup < 0) error->all(FLERR, "shapes assign: unknown group '{}'", arg[0]);
+  const int groupbit = group->bitmask[igroup];
+  const int nshapes = avec->shapes().size();
+
+  enum { KEEP, FIXED, RANDOM } shape_mode = KEEP, orient_mode = KEEP;
+  int shape_lo = 0, shape_hi = 0;
+  bigint shape_seed = 0, orient_seed = 0;
+  double density = -1.0, mass = -1.0, fixed_quat[4] = {1.0, 0.0, 0.0, 0.0};
+
+  for (int iarg = 1; iarg < narg;) {
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg) error->all(FLERR, "shapes assign: keyword '{}' needs {} value(s)", key, n);
+    };
+    if (key == "shape" && iarg + 1 < narg && strcmp(arg[iarg + 1], "random") == 0) {
+      need(4);
+      shape_mode = RANDOM;
+      shape_lo = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
+      shape_hi = utils::inumeric(FLERR, arg[iarg + 3], false, lmp);
+      shape_seed = utils::bnumeric(FLERR, arg[iarg + 4], false, lmp);
+      iarg += 5;
+    } else if (key == "shape") {
+      need(1);
+      shape_mode = FIXED;
+      shape_lo = shape_hi = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else if (key == "density") {
+      need(1);
+      density = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(density > 0.0)) error->all(FLERR, "shapes assign: density {} must be positive", density);
+      iarg += 2;
+    } else if (key == "mass") {
+      need(1);
+      mass = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(mass > 0.0)) error->all(FLERR, "shapes assign: mass {} must be positive", mass);
+      iarg += 2;
+    } else if (key == "orient" && iarg + 1 < narg && strcmp(arg[iarg + 1], "random") == 0) {
+      need(2);
+      orient_mode = RANDOM;
+      orient_seed = utils::bnumeric(FLERR, arg[iarg + 2], false, lmp);
+      iarg += 3;
+    } else if (key == "orient" && iarg + 1 < narg && strcmp(arg[iarg + 1], "quat") == 0) {
+      need(5);
+      orient_mode = FIXED;
+      double norm = 0.0;
+      for (int k = 0; k < 4; k++) {
+        fixed_quat[k] = utils::numeric(FLERR, arg[iarg + 2 + k], false, lmp);
+        norm += fixed_quat[k] * fixed_quat[k];
+      }
+      if (!(norm > 1e-20)) error->all(FLERR, "shapes assign: orient quat has zero length");
+      for (double &c : fixed_quat) c /= std::sqrt(norm);
+      iarg += 6;
+    } else {
+      error->all(FLERR, "shapes assign: unknown keyword '{}' (expected shape, density, mass, "
+                 "orient)", key);
+    }
+  }
+  if (shape_mode != KEEP && (shape_lo < 0 || shape_hi > nshapes || shape_lo > shape_hi))
+    error->all(FLERR, "shapes assign: shape ids {}..{} are outside the library's 0..{} (load "
+               "shapes first with 'shapes read' or 'shapes random')", shape_lo, shape_hi, nshapes);
+  if (density > 0.0 && mass > 0.0)
+    error->all(FLERR, "shapes assign: give density or mass, not both");
+
+  int *mask = atom->mask;
+  tagint *tag = atom->tag;
+  auto shape_of = [&](int i) {
+    if (shape_mode == FIXED) return shape_lo;
+    if (shape_mode == RANDOM)
+      return shape_lo + (int) ((shape_hi - shape_lo + 1) * hashed_uniform(shape_seed, tag[i], 0));
+    return avec->shape[i];
+  };
+  if (density > 0.0) {    // a point has no volume: check on all ranks before changing anything
+    tagint first_point = MAXTAGINT, any_point;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((mask[i] & groupbit) && shape_of(i) == 0) first_point = std::min(first_point, tag[i]);
+    MPI_Allreduce(&first_point, &any_point, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (any_point != MAXTAGINT)
+      error->all(FLERR, "shapes assign: atom ID {} is a point (shape 0) and has no volume; "
+                 "give its 'mass' instead of a density", any_point);
+  }
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const int id = shape_of(i);
+    double m = avec->rmass[i];
+    if (mass > 0.0) m = mass;
+    if (density > 0.0) m = density * avec->shapes().shape(id).volume;
+    avec->set_shape(i, id, m);
+    if (orient_mode == FIXED)
+      for (int k = 0; k < 4; k++) avec->quat[i][k] = fixed_quat[k];
+    if (orient_mode == RANDOM)
+      random_quaternion(hashed_uniform(orient_seed, tag[i], 1), hashed_uniform(orient_seed, tag[i], 2),
+                        hashed_uniform(orient_seed, tag[i], 3), avec->quat[i]);
+  }
+}

@@ -1,0 +1,37 @@
+/* The `shapes` command: loads, generates, writes and assigns the grain shapes of
+   atom_style spheropolyhedron. See doc/shapes.md. */
+
+#ifdef COMMAND_CLASS
+// clang-format off
+CommandStyle(shapes,Shapes);
+// clang-format on
+#else
+
+#ifndef LMP_NSCD_SHAPES_H
+#define LMP_NSCD_SHAPES_H
+
+#include "command.h"
+
+namespace LAMMPS_NS {
+
+class AtomVecSpheropolyhedron;
+
+class Shapes : public Command {
+ public:
+  Shapes(class LAMMPS *lmp) : Command(lmp) {}
+  void command(int, char **) override;
+
+ private:
+  AtomVecSpheropolyhedron *avec = nullptr;
+
+  void read(int, char **);
+  void random(int, char **);
+  void write(int, char **);
+  void info(int, char **);
+  void assign(int, char **);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

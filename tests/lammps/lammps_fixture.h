@@ -1,0 +1,77 @@
+// A LAMMPS instance per test, driven by deck lines; errors are exceptions
+// (LAMMPS is built with LAMMPS_EXCEPTIONS). Works on any number of MPI ranks.
+#pragma once
+
+#include "atom.h"
+#include "exceptions.h"
+#include "input.h"
+#include "lammps.h"
+
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class LammpsTest : public ::testing::Test {
+ protected:
+  LAMMPS_NS::LAMMPS *lmp = nullptr;
+
+  void SetUp() override { start(); }
+  void TearDown() override { stop(); }
+
+  void start()
+  {
+    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), MPI_COMM_WORLD);
+  }
+  void stop()
+  {
+    delete lmp;
+    lmp = nullptr;
+  }
+  void restart_instance()
+  {
+    stop();
+    start();
+  }
+
+  void run(const std::string &line) { lmp->input->one(line); }
+  void run(const std::vector<std::string> &lines)
+  {
+    for (auto &line : lines) run(line);
+  }
+
+  // The message of the LAMMPS error a command raises ("" if it raises none).
+  std::string error_of(const std::string &line)
+  {
+    try {
+      run(line);
+    } catch (LAMMPS_NS::LAMMPSException &e) {
+      return e.message;
+    }
+    return "";
+  }
+
+  int rank() const
+  {
+    int me = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &me);
+    return me;
+  }
+  int ranks() const
+  {
+    int n = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &n);
+    return n;
+  }
+
+  // Path of a scratch file unique to this test (and shared by all ranks).
+  std::string scratch(const std::string &name) const
+  {
+    const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
+    return std::string(NSCD_TEST_SCRATCH) + "/" + info->test_suite_name() + "." + info->name() +
+        "." + std::to_string(ranks()) + "." + name;
+  }
+};

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs what the build needs (Debian packages, LAMMPS' source), configures and builds.
+# Idempotent: reuses an existing build tree (and ccache). Used by run_example.sh and
+# run_tests.sh; extra arguments go to the CMake configure step.
+#
+#   tools/build.sh [-DLAMMPS_SOURCE_DIR=/path/to/lammps] [other -D options]
+#
+# Environment: BUILD_DIR (default <repo>/build), JOBS (default: number of cores).
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${BUILD_DIR:-$here/build}
+jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+
+packages=(g++ cmake make dpkg-dev xz-utils ca-certificates libopenmpi-dev openmpi-bin
+          libeigen3-dev libqhull-dev libgtest-dev libbenchmark-dev ccache
+          python3-numpy python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "build.sh: installing Debian packages: ${missing[*]}"
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "build.sh: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+    sudo=sudo
+  fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+if [ ! -f "$build/CMakeCache.txt" ] || [ $# -gt 0 ]; then
+  cmake -S "$here" -B "$build" "$@"
+fi
+cmake --build "$build" -j "$jobs"
