@@ -30,6 +30,9 @@ struct Spheropolyhedron {
   std::vector<Vec3> vertices;              // core vertices, body frame
   std::vector<std::array<int, 2>> edges;   // each core edge once, vertex indices
   std::vector<Face> faces;                 // core faces; coplanar hull facets merged
+  // The two faces bounding edges[i]: in edge_faces[i][0] the edge runs edges[i][0] ->
+  // edges[i][1] in counter-clockwise order, in edge_faces[i][1] it runs the other way.
+  std::vector<std::array<int, 2>> edge_faces;
   double radius = 0.0;                     // rounding (dilation) radius r >= 0
 
   // Mass properties of the dilated shape at unit density, in the body frame.

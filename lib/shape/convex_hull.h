@@ -1,0 +1,28 @@
+// Convex hull of a 3-D point cloud as polygonal faces (qhull underneath).
+// Internal to lib/shape: Spheropolyhedron users do not need it.
+#pragma once
+
+#include "math/types.h"
+
+#include <array>
+#include <vector>
+
+namespace nscd {
+
+struct HullPolygon {
+  std::vector<int> vertices;    // indices into the input points, counter-clockwise seen from outside
+};
+
+struct HullTopology {
+  std::vector<int> vertices;                // input indices of the hull vertices, ascending
+  std::vector<HullPolygon> faces;           // coplanar facets merged; canonical order
+  std::vector<std::array<int, 2>> edges;    // input indices, first < second, sorted
+};
+
+// Hull of points spanning 3-D space (the caller has checked that they are not flat).
+// Coplanar facets are merged into one polygon. Each face starts at its smallest vertex
+// index and faces are sorted, so the result only depends on the input order, not on
+// qhull's internals. Throws ShapeError if qhull fails.
+HullTopology convex_hull_3d(const std::vector<Vec3> &points);
+
+}    // namespace nscd

@@ -1,0 +1,283 @@
+#include "shape/spheropolyhedron.h"
+
+#include "shape/convex_hull.h"
+#include "shape/mass_properties.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace nscd {
+namespace {
+
+// Points closer than this (relative to the shape's size: the larger of the point cloud's
+// extent and the rounding radius) are one point, and a cloud thinner than this is flat or
+// collinear.
+constexpr double kRelativeTolerance = 1e-10;
+// Principal moments closer than this (relative to the largest) are treated as equal: the
+// axes in that plane are then taken from the input axes (see choose_principal_axes).
+constexpr double kDegenerateMoments = 1e-10;
+
+std::string describe(const Vec3 &p)
+{
+  std::ostringstream out;
+  out.precision(17);
+  out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return out.str();
+}
+
+void check_input(const std::vector<Vec3> &points, double radius)
+{
+  if (!std::isfinite(radius) || radius < 0.0) {
+    std::ostringstream out;
+    out << "rounding radius " << radius << " is invalid; give a finite radius >= 0";
+    throw ShapeError(out.str());
+  }
+  if (points.empty()) throw ShapeError("no points given; give at least one point (a sphere)");
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite()) {
+      throw ShapeError("point " + std::to_string(i + 1) + " " + describe(points[i]) +
+                       " is not finite; give finite coordinates");
+    }
+  }
+}
+
+// The points with near-duplicates removed (first occurrence kept, input order kept),
+// shifted by -reference.
+std::vector<Vec3> distinct_points(const std::vector<Vec3> &points, const Vec3 &reference, double tolerance)
+{
+  std::vector<Vec3> kept;
+  kept.reserve(points.size());
+  for (const auto &p : points) {
+    const Vec3 q = p - reference;
+    const bool duplicate = std::any_of(kept.begin(), kept.end(),
+                                       [&](const Vec3 &k) { return (k - q).norm() <= tolerance; });
+    if (!duplicate) kept.push_back(q);
+  }
+  return kept;
+}
+
+int farthest_from_line(const std::vector<Vec3> &points, const Vec3 &origin, const Vec3 &direction, double *distance)
+{
+  int best = 0;
+  *distance = -1.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec3 d = points[i] - origin;
+    const double dist = (d - d.dot(direction) * direction).norm();
+    if (dist > *distance) {
+      *distance = dist;
+      best = static_cast<int>(i);
+    }
+  }
+  return best;
+}
+
+enum class Dimension { point, line, flat, solid };
+
+// How many dimensions the (distinct) points span, by the farthest-point construction.
+Dimension spanned_dimension(const std::vector<Vec3> &points, double tolerance)
+{
+  if (points.size() == 1) return Dimension::point;
+  const Vec3 &a = points[0];
+  double distance = 0.0;
+  const int b = farthest_from_line(points, a, Vec3::Zero(), &distance);
+  if (distance <= tolerance) return Dimension::point;
+  const Vec3 axis = (points[b] - a).normalized();
+  const int c = farthest_from_line(points, a, axis, &distance);
+  if (distance <= tolerance) return Dimension::line;
+  const Vec3 normal = axis.cross(points[c] - a).normalized();
+  double thickness = 0.0;
+  for (const auto &p : points) thickness = std::max(thickness, std::abs((p - a).dot(normal)));
+  return thickness <= tolerance ? Dimension::flat : Dimension::solid;
+}
+
+// The two extreme points of a collinear set.
+std::vector<Vec3> segment_ends(const std::vector<Vec3> &points)
+{
+  double distance = 0.0;
+  const int far = farthest_from_line(points, points[0], Vec3::Zero(), &distance);
+  const Vec3 axis = (points[far] - points[0]).normalized();
+  auto along = [&](const Vec3 &a, const Vec3 &b) { return a.dot(axis) < b.dot(axis); };
+  return {*std::min_element(points.begin(), points.end(), along),
+          *std::max_element(points.begin(), points.end(), along)};
+}
+
+// Newell's normal of a polygon: robust for slightly non-planar merged faces.
+Vec3 polygon_normal(const std::vector<Vec3> &vertices, const std::vector<int> &polygon)
+{
+  Vec3 n = Vec3::Zero();
+  const size_t count = polygon.size();
+  for (size_t i = 0; i < count; ++i) n += vertices[polygon[i]].cross(vertices[polygon[(i + 1) % count]]);
+  return n.normalized();
+}
+
+void set_face_planes(Spheropolyhedron &shape)
+{
+  for (auto &face : shape.faces) {
+    face.normal = polygon_normal(shape.vertices, face.vertices);
+    face.offset = -HUGE_VAL;
+    for (int v : face.vertices) face.offset = std::max(face.offset, face.normal.dot(shape.vertices[v]));
+  }
+}
+
+void set_edge_faces(Spheropolyhedron &shape)
+{
+  shape.edge_faces.assign(shape.edges.size(), {-1, -1});
+  for (size_t f = 0; f < shape.faces.size(); ++f) {
+    const auto &polygon = shape.faces[f].vertices;
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const int a = polygon[i], b = polygon[(i + 1) % polygon.size()];
+      const std::array<int, 2> key{std::min(a, b), std::max(a, b)};
+      const auto it = std::lower_bound(shape.edges.begin(), shape.edges.end(), key);
+      shape.edge_faces[it - shape.edges.begin()][a < b ? 0 : 1] = static_cast<int>(f);
+    }
+  }
+}
+
+// Polyhedron core from the hull of the (distinct, 3-D spanning) points.
+void build_polyhedron_core(Spheropolyhedron &shape, const std::vector<Vec3> &points)
+{
+  const HullTopology hull = convex_hull_3d(points);
+  std::vector<int> compact(points.size(), -1);
+  for (int v : hull.vertices) {
+    compact[v] = static_cast<int>(shape.vertices.size());
+    shape.vertices.push_back(points[v]);
+  }
+  for (const auto &polygon : hull.faces) {
+    Face face;
+    for (int v : polygon.vertices) face.vertices.push_back(compact[v]);
+    shape.faces.push_back(std::move(face));
+  }
+  for (const auto &edge : hull.edges) shape.edges.push_back({compact[edge[0]], compact[edge[1]]});
+  set_face_planes(shape);
+  set_edge_faces(shape);
+}
+
+MassMoments shape_moments(const Spheropolyhedron &shape)
+{
+  if (shape.is_sphere()) return ball_moments(shape.vertices[0], shape.radius);
+  if (shape.is_spherocylinder()) return spherocylinder_moments(shape.vertices[0], shape.vertices[1], shape.radius);
+  return dilated_polyhedron_moments(shape.vertices, shape.faces, shape.edges, shape.edge_faces, shape.radius);
+}
+
+// Index of the first component whose magnitude is (within round-off) the largest.
+int dominant_component(const Vec3 &v)
+{
+  const double largest = v.cwiseAbs().maxCoeff();
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(v[k]) >= largest - 1e-9) return k;
+  return 0;
+}
+
+// Eigenvectors have no sign: make the dominant component positive.
+Vec3 with_fixed_sign(const Vec3 &v) { return v[dominant_component(v)] < 0.0 ? Vec3(-v) : v; }
+
+// A unit vector orthogonal to `axis`, taken from the input axis most orthogonal to it.
+Vec3 orthogonal_from_input_axes(const Vec3 &axis)
+{
+  const Vec3 magnitude = axis.cwiseAbs();
+  const double smallest = magnitude.minCoeff();
+  int k = 0;
+  while (magnitude[k] > smallest + 1e-9) ++k;
+  const Vec3 e = Vec3::Unit(k);
+  return (e - e.dot(axis) * axis).normalized();
+}
+
+// Principal axes as the columns of a rotation, ascending moments. The choice is
+// deterministic and returns the identity for a shape already in its body frame (so that
+// rebuilding from body-frame vertices is stable): signs make the dominant component
+// positive, and equal moments keep the input axes within their plane.
+Mat3 choose_principal_axes(const Mat3 &inertia)
+{
+  const Eigen::SelfAdjointEigenSolver<Mat3> solver(inertia);
+  const Vec3 moments = solver.eigenvalues();
+  const Mat3 vectors = solver.eigenvectors();
+  const double tolerance = kDegenerateMoments * moments.cwiseAbs().maxCoeff();
+  const bool low_pair = moments[1] - moments[0] <= tolerance;
+  const bool high_pair = moments[2] - moments[1] <= tolerance;
+  Vec3 c0, c1;
+  if (low_pair && high_pair) return Mat3::Identity();
+  if (low_pair) {
+    const Vec3 distinct = with_fixed_sign(vectors.col(2));
+    c0 = orthogonal_from_input_axes(distinct);
+    c1 = distinct.cross(c0);
+  } else if (high_pair) {
+    c0 = with_fixed_sign(vectors.col(0));
+    c1 = orthogonal_from_input_axes(c0);
+  } else {
+    c0 = with_fixed_sign(vectors.col(0));
+    c1 = with_fixed_sign(vectors.col(1));
+  }
+  Mat3 axes;
+  axes << c0, c1, c0.cross(c1);
+  return axes;
+}
+
+// Moves the shape (its vertices given relative to `reference`) into its body frame.
+void move_to_body_frame(Spheropolyhedron &shape, const Vec3 &reference)
+{
+  const MassMoments moments = shape_moments(shape);
+  const Vec3 centre = moments.centre();
+  const Mat3 inertia = moments.inertia_about_centre();
+  const Mat3 axes = choose_principal_axes(inertia);
+  for (auto &v : shape.vertices) v = axes.transpose() * (v - centre);
+  if (shape.is_spherocylinder()) {
+    const Vec3 d = shape.vertices[1] - shape.vertices[0];
+    if (d[dominant_component(d)] < 0.0) std::swap(shape.vertices[0], shape.vertices[1]);
+  }
+  set_face_planes(shape);
+  shape.volume = moments.volume;
+  shape.principal_inertia = (axes.transpose() * inertia * axes).diagonal();
+  shape.input_centroid = reference + centre;
+  shape.input_rotation = Quat(axes).normalized();
+  double farthest = 0.0;
+  for (const auto &v : shape.vertices) farthest = std::max(farthest, v.norm());
+  shape.bounding_radius = farthest + shape.radius;
+}
+
+}    // namespace
+
+Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double radius)
+{
+  check_input(points, radius);
+  Vec3 reference = Vec3::Zero();
+  for (const auto &p : points) reference += p;
+  reference /= static_cast<double>(points.size());
+  double size = 0.0;
+  for (const auto &p : points) size = std::max(size, (p - reference).norm());
+  const double tolerance = kRelativeTolerance * std::max(size, radius);
+
+  const std::vector<Vec3> distinct = distinct_points(points, reference, tolerance);
+  Spheropolyhedron shape;
+  shape.radius = radius;
+  switch (spanned_dimension(distinct, tolerance)) {
+    case Dimension::point:
+      if (radius <= 0.0) {
+        throw ShapeError("a single point with radius 0 has no volume; give a radius > 0 (a sphere) "
+                         "or at least 4 points that are not coplanar");
+      }
+      shape.vertices = {distinct[0]};
+      break;
+    case Dimension::line:
+      if (radius <= 0.0) {
+        throw ShapeError(std::to_string(distinct.size()) +
+                         " collinear points with radius 0 have no volume; give a radius > 0 (a "
+                         "spherocylinder) or add a point off the line");
+      }
+      shape.vertices = segment_ends(distinct);
+      break;
+    case Dimension::flat:
+      throw ShapeError(std::to_string(distinct.size()) +
+                       " coplanar points form a flat point set (no volume); add a point off "
+                       "their plane, or for a thin plate give vertices on both of its faces");
+    case Dimension::solid:
+      build_polyhedron_core(shape, distinct);
+      break;
+  }
+  move_to_body_frame(shape, reference);
+  return shape;
+}
+
+}    // namespace nscd
