@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
 #include <sstream>
 
 using namespace nscd;
@@ -266,3 +267,20 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"DuplicateName", "shape a\nradius 1\nvertices 1\n0 0 0\nend\nshape a\n", "test.shapes:6: shape name 'a' is already used"},
         BadFile{"SecondRadius", "shape a\nradius 1\nradius 2\n", "test.shapes:3: second 'radius'"}),
     [](const ::testing::TestParamInfo<BadFile> &info) { return std::string(info.param.name); });
+
+TEST(ShapeLibrary, ExampleOfTheFormatPageReads)
+{
+  std::ifstream page(NSCD_FORMAT_DOC);
+  ASSERT_TRUE(page) << NSCD_FORMAT_DOC;
+  std::stringstream all;
+  all << page.rdbuf();
+  const std::string text = all.str();
+  const auto start = text.find("```\n", text.find("## Example")) + 4;
+  const auto example = text.substr(start, text.find("```", start) - start);
+  const auto library = read_text(example, "doc example");
+  ASSERT_EQ(library.size(), 4);
+  EXPECT_NEAR(library.shape(1).volume, 6.0, 1e-14);
+  EXPECT_EQ(library.shape(2).vertices.size(), 5u);    // the interior point is dropped
+  EXPECT_TRUE(library.shape(3).is_sphere());
+  EXPECT_TRUE(library.shape(4).is_spherocylinder());
+}
