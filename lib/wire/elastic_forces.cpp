@@ -1,0 +1,121 @@
+#include "wire/elastic_forces.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace nscd::wire {
+
+namespace {
+
+double checked_length(const Vec3 &d, const char *what)
+{
+  const double length = d.norm();
+  if (!(length > 0.0) || !std::isfinite(length)) {
+    std::ostringstream msg;
+    msg << "wire: " << what << " has length " << length
+        << " (its two nodes coincide or are not finite); check the wire's initial "
+           "coordinates or reduce the wire time step if it blew up";
+    throw std::invalid_argument(msg.str());
+  }
+  return length;
+}
+
+// Unit vector along v, or zero if v vanishes (the wire is exactly straight or folded).
+Vec3 unit_or_zero(const Vec3 &v)
+{
+  const double n = v.norm();
+  return n > 0.0 ? Vec3(v / n) : Vec3::Zero();
+}
+
+}    // namespace
+
+double angle_between(const Vec3 &u, const Vec3 &w)
+{
+  return std::atan2(u.cross(w).norm(), u.dot(w));
+}
+
+AxialForces axial_element_forces(const AxialLaw &law, double rest_length, const Vec3 &a,
+                                 const Vec3 &b)
+{
+  if (!(rest_length > 0.0)) {
+    std::ostringstream msg;
+    msg << "wire: element rest length " << rest_length << " must be > 0";
+    throw std::invalid_argument(msg.str());
+  }
+  const Vec3 d = b - a;
+  const double length = checked_length(d, "an element");
+  AxialForces out;
+  out.strain = (length - rest_length) / rest_length;
+  if (out.strain < 0.0 && !law.resists_compression) return out;    // slack string
+  out.tension = law.k_elo * out.strain;
+  out.energy = 0.5 * law.k_elo * rest_length * out.strain * out.strain;
+  // dE/dL = k_elo * strain = tension; a tensile element pulls b towards a.
+  out.on_b = -out.tension / length * d;
+  out.on_a = -out.on_b;
+  return out;
+}
+
+BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, const Vec3 &c)
+{
+  const Vec3 u = b - a;
+  const Vec3 w = c - b;
+  const double lu = checked_length(u, "the element before a bent node");
+  const double lw = checked_length(w, "the element after a bent node");
+  const Vec3 uh = u / lu;
+  const Vec3 wh = w / lw;
+  const double cosine = uh.dot(wh);
+
+  BendingForces out;
+  out.angle = std::atan2(uh.cross(wh).norm(), cosine);
+  out.energy = 0.5 * k_rot * out.angle * out.angle;
+  // dnu/du = -p_u / |u| and dnu/dw = +p_w / |w| with the unit in-plane perpendiculars
+  // p_u = unit(wh - cos uh) (towards w, normal to u) and p_w = unit(uh - cos wh). Using the
+  // unit vectors rather than dividing by sin(nu) keeps |F_a| = k nu / |u| exact near 0 and
+  // near pi. At nu == 0 the force vanishes anyway; at nu == pi exactly every perpendicular
+  // is equally steep and unit_or_zero returns zero, the symmetric choice.
+  const double moment = k_rot * out.angle;
+  out.on_a = -(moment / lu) * unit_or_zero(wh - cosine * uh);
+  out.on_c = (moment / lw) * unit_or_zero(uh - cosine * wh);
+  out.on_b = -(out.on_a + out.on_c);
+  return out;
+}
+
+WireTopology open_chain_topology(int num_nodes, double rest_length)
+{
+  if (num_nodes < 2) {
+    std::ostringstream msg;
+    msg << "wire: a chain needs at least 2 nodes, got " << num_nodes;
+    throw std::invalid_argument(msg.str());
+  }
+  WireTopology topology;
+  topology.elements.reserve(num_nodes - 1);
+  topology.joints.reserve(num_nodes - 2);
+  for (int i = 0; i + 1 < num_nodes; ++i) topology.elements.push_back({i, i + 1, rest_length});
+  for (int i = 1; i + 1 < num_nodes; ++i) topology.joints.push_back({i - 1, i, i + 1});
+  return topology;
+}
+
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
+                                 double k_rot, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces)
+{
+  ElasticEnergy energy;
+  for (const WireElement &e : topology.elements) {
+    const AxialForces f = axial_element_forces(axial, e.rest_length, positions[e.a], positions[e.b]);
+    forces[e.a] += f.on_a;
+    forces[e.b] += f.on_b;
+    energy.axial += f.energy;
+  }
+  if (k_rot == 0.0) return energy;    // a string: skip the bending work entirely
+  for (const WireJoint &j : topology.joints) {
+    const BendingForces f = bending_node_forces(k_rot, positions[j.a], positions[j.b], positions[j.c]);
+    forces[j.a] += f.on_a;
+    forces[j.b] += f.on_b;
+    forces[j.c] += f.on_c;
+    energy.bending += f.energy;
+  }
+  return energy;
+}
+
+}    // namespace nscd::wire

@@ -1,0 +1,86 @@
+// Elastic forces of a wire: tensile springs along elements, rotational springs at nodes.
+//
+// The wire is a chain of point masses (nodes). Element (a,b) carries the tensile force
+// f = k_elo * strain, strain = (L - L0) / L0, so k_elo is a force (it plays the role of EA).
+// Node b between elements (a,b) and (b,c) carries the bending moment M = k_rot * nu, where nu
+// is the angle between the element directions b-a and c-b (0 for a straight wire), so k_rot
+// is a moment (it plays the role of EI / l). Both laws derive from energies:
+//   E_axial   = k_elo * L0 * strain^2 / 2
+//   E_bending = k_rot * nu^2 / 2
+// and the kernels below return exactly -dE/dx on every node, so the forces sum to zero and
+// carry no net torque. They are pure functions of positions: the LAMMPS bond/angle styles
+// and the wire subcycle both call them. Derivations: doc/wire_model.md.
+#pragma once
+
+#include "math/types.h"
+
+#include <array>
+#include <vector>
+
+namespace nscd::wire {
+
+struct AxialLaw {
+  double k_elo = 0.0;                 // force per unit strain (EA of the continuum wire)
+  bool resists_compression = true;    // false: a string, zero force while L < L0
+};
+
+struct AxialForces {
+  Vec3 on_a = Vec3::Zero();
+  Vec3 on_b = Vec3::Zero();
+  double energy = 0.0;
+  double tension = 0.0;    // k_elo * strain, > 0 when stretched (0 for a slack string)
+  double strain = 0.0;     // (L - L0) / L0, reported even when the string is slack
+};
+
+// Tensile spring of the element from node a to node b with rest length rest_length.
+// Throws std::invalid_argument if the nodes coincide or rest_length <= 0.
+AxialForces axial_element_forces(const AxialLaw &law, double rest_length, const Vec3 &a,
+                                 const Vec3 &b);
+
+struct BendingForces {
+  Vec3 on_a = Vec3::Zero();
+  Vec3 on_b = Vec3::Zero();
+  Vec3 on_c = Vec3::Zero();
+  double energy = 0.0;
+  double angle = 0.0;    // nu in [0, pi]: angle between b-a and c-b
+};
+
+// Rotational spring at node b between elements (a,b) and (b,c), moment k_rot * nu.
+// Smooth through nu -> 0; at nu == pi exactly (wire folded back on itself) the direction
+// of the force is undefined and the forces are zero. Throws std::invalid_argument if an
+// element has zero length.
+BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, const Vec3 &c);
+
+// Angle between two vectors in [0, pi], accurate near 0 and near pi (atan2 form).
+double angle_between(const Vec3 &u, const Vec3 &w);
+
+// Topology of wires as index lists, so one call adds the elastic forces of many chains.
+struct WireElement {
+  int a, b;
+  double rest_length;
+};
+struct WireJoint {
+  int a, b, c;    // b is the node carrying the rotational spring
+};
+struct WireTopology {
+  std::vector<WireElement> elements;
+  std::vector<WireJoint> joints;
+};
+
+// Topology of one open chain of num_nodes nodes 0..num_nodes-1 with the given rest length
+// per element: elements (i,i+1), joints (i-1,i,i+1).
+WireTopology open_chain_topology(int num_nodes, double rest_length);
+
+struct ElasticEnergy {
+  double axial = 0.0;
+  double bending = 0.0;
+  double total() const { return axial + bending; }
+};
+
+// Adds the axial and bending forces of all elements and joints to forces (indexed like
+// positions; not cleared) and returns the elastic energy.
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
+                                 double k_rot, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces);
+
+}    // namespace nscd::wire

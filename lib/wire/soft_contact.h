@@ -1,0 +1,79 @@
+// Soft contact law of wire elements (Cundall-Strack linear spring-dashpot with static and
+// dynamic Coulomb friction) and the lever rule that hands a contact force to the nodes.
+//
+// Conventions (force on body A; body B gets the opposite):
+//   normal      unit vector pointing from B to A;
+//   overlap     xi >= 0, the interpenetration depth of the two dilated shapes;
+//   velocity    v_A - v_B at the contact point.
+// Normal:      f_n = k_n xi + gamma_n dxi/dt, dxi/dt = -(v . n), and f_n is clamped at 0:
+//              a separating contact is never pulled together by its dashpot.
+// Tangential:  spring history xi_t (relative tangential displacement while sticking),
+//              trial force f_t = -(k_t xi_t + gamma_t v_t). If |f_t| > mu f_n the contact
+//              slips: the spring is dropped and re-attached (see SlipReset) and the force is
+//              mu_d f_n along the trial direction. mu = mu_s while sticking, mu_d while
+//              sliding. Details and reasons: doc/wire_model.md.
+#pragma once
+
+#include "math/types.h"
+
+#include <cstdint>
+
+namespace nscd::wire {
+
+// What the history holds right after a slip.
+enum class SlipReset : std::uint8_t {
+  // Paper's wording taken literally: spring removed, history zero. A steadily sliding
+  // contact then saws between 0 and mu_s f_n (mean about mu_s f_n / 2, not mu_d f_n).
+  ToZero,
+  // Spring re-attached at the length that carries the dynamic force, k_t |xi_t| = mu_d f_n,
+  // and the contact remembers it slides (threshold mu_d) until the trial force falls back
+  // under mu_d f_n. Steady sliding then carries exactly mu_d f_n. Default.
+  ToDynamicLength,
+};
+
+struct SoftContactLaw {
+  double k_n = 0.0;        // normal stiffness, force / length
+  double gamma_n = 0.0;    // normal damping, force * time / length
+  double k_t = 0.0;        // tangential stiffness
+  double gamma_t = 0.0;    // tangential damping
+  double mu_s = 0.0;       // static friction coefficient
+  double mu_d = 0.0;       // dynamic friction coefficient, 0 <= mu_d <= mu_s
+  SlipReset slip_reset = SlipReset::ToDynamicLength;
+};
+
+// Throws std::invalid_argument naming the bad value (negative stiffness, mu_d > mu_s, ...).
+void validate(const SoftContactLaw &law);
+
+// Per-contact memory, owned by the caller (e.g. LAMMPS' per-contact history, which packs
+// it for migration and restart): plain, trivially copyable, 4 doubles.
+struct TangentialHistory {
+  double xi[3] = {0.0, 0.0, 0.0};    // tangential spring displacement, world frame
+  double sliding = 0.0;              // 1 while the contact slides (ToDynamicLength only)
+  static constexpr int kNumDoubles = 4;
+};
+
+struct SoftContactForce {
+  Vec3 force = Vec3::Zero();    // on body A
+  double normal_force = 0.0;    // f_n >= 0
+  Vec3 tangential_force = Vec3::Zero();
+  double elastic_energy = 0.0;  // k_n xi^2/2 + k_t |xi_t|^2/2 after the update
+  bool slipped = false;         // the Coulomb limit was reached this step
+};
+
+// One time step of the contact: rotates history into the plane normal to `normal`,
+// increments it by v_t * dt, evaluates the law and updates history in place.
+// A contact with overlap <= 0 is open: zero force and the history is cleared.
+SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3 &normal,
+                                    double overlap, const Vec3 &relative_velocity, double dt,
+                                    TangentialHistory &history);
+
+// Lever rule: a force at the point a + s (b - a) of element (a,b) goes (1-s) to a and s to b.
+// This is the paper's "weights inversely proportional to the distance" for a point on the
+// segment, and it keeps both the total force and the torque about any point.
+struct LeverWeights {
+  double on_a, on_b;
+};
+// Throws std::invalid_argument if s is outside [0, 1] (beyond round-off).
+LeverWeights lever_weights(double s);
+
+}    // namespace nscd::wire

@@ -1,0 +1,131 @@
+#include "wire/subcycle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace nscd::wire {
+
+SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_substeps)
+{
+  if (!(dt_nscd > 0.0) || !(dt_sp_max > 0.0) || !std::isfinite(dt_nscd)) {
+    std::ostringstream msg;
+    msg << "wire subcycle: dt_NSCD = " << dt_nscd << " and dt_SP max = " << dt_sp_max
+        << " must both be > 0";
+    throw std::invalid_argument(msg.str());
+  }
+  // Small slack so that dt_nscd = 10 * dt_sp_max gives 10, not 11, substeps.
+  const int needed = std::max(1, static_cast<int>(std::ceil(dt_nscd / dt_sp_max * (1.0 - 1e-12))));
+  if (requested_substeps < 0) {
+    std::ostringstream msg;
+    msg << "wire subcycle: requested substeps " << requested_substeps
+        << " must be >= 0 (0 = automatic)";
+    throw std::invalid_argument(msg.str());
+  }
+  if (requested_substeps > 0 && requested_substeps < needed) {
+    std::ostringstream msg;
+    msg << "wire subcycle: " << requested_substeps << " substeps give dt_SP = "
+        << dt_nscd / requested_substeps << " above the stable " << dt_sp_max
+        << "; use at least " << needed << " substeps (or 0 for automatic)";
+    throw std::invalid_argument(msg.str());
+  }
+  SubcyclePlan plan;
+  plan.substeps = requested_substeps > 0 ? requested_substeps : needed;
+  plan.dt_sp = dt_nscd / plan.substeps;
+  return plan;
+}
+
+Pose GrainMotion::pose_at(double tau) const
+{
+  Pose pose;
+  pose.position = start.position + tau * velocity;
+  const Vec3 turn = tau * angular_velocity;
+  const double angle = turn.norm();
+  const Quat rotation = angle > 0.0 ? Quat(Eigen::AngleAxisd(angle, turn / angle)) : Quat::Identity();
+  pose.orientation = (rotation * start.orientation).normalized();
+  return pose;
+}
+
+Vec3 GrainMotion::point_velocity(const Vec3 &world_point, double tau) const
+{
+  return velocity + angular_velocity.cross(world_point - pose_at(tau).position);
+}
+
+void GrainForceAccumulator::reset(int num_grains)
+{
+  force_sum_.assign(num_grains, Vec3::Zero());
+  torque_sum_.assign(num_grains, Vec3::Zero());
+  substeps_ = 0;
+}
+
+Vec3 GrainForceAccumulator::mean_force(int grain) const
+{
+  return substeps_ > 0 ? Vec3(force_sum_[grain] / substeps_) : Vec3::Zero();
+}
+
+Vec3 GrainForceAccumulator::mean_torque(int grain) const
+{
+  return substeps_ > 0 ? Vec3(torque_sum_[grain] / substeps_) : Vec3::Zero();
+}
+
+void WireNodeSet::reset(const std::vector<Vec3> &initial_positions, double node_mass, double step)
+{
+  if (!(node_mass > 0.0) || !(step > 0.0)) {
+    std::ostringstream msg;
+    msg << "wire nodes: mass " << node_mass << " and step " << step << " must be > 0";
+    throw std::invalid_argument(msg.str());
+  }
+  const std::size_t n = initial_positions.size();
+  state.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    state[i] = gear5_start(initial_positions[i], Vec3::Zero(), Vec3::Zero(), step);
+  mass.assign(n, node_mass);
+  fixed.assign(n, 0);
+  dt = step;
+  prepare_wire_nodes(*this, step);
+}
+
+void prepare_wire_nodes(WireNodeSet &nodes, double dt)
+{
+  const std::size_t n = nodes.state.size();
+  if (nodes.mass.size() != n || nodes.fixed.size() != n) {
+    std::ostringstream msg;
+    msg << "wire nodes: " << n << " states but " << nodes.mass.size() << " masses and "
+        << nodes.fixed.size() << " fixed flags; give one of each per node";
+    throw std::invalid_argument(msg.str());
+  }
+  if (nodes.dt != dt) {
+    if (nodes.dt > 0.0)
+      for (Gear5State &s : nodes.state) gear5_change_step(s, nodes.dt, dt);
+    nodes.dt = dt;
+  }
+  nodes.positions.resize(n);
+  nodes.velocities.resize(n);
+  nodes.forces.resize(n);
+}
+
+void predict_wire_nodes(WireNodeSet &nodes)
+{
+  const int n = nodes.size();
+  for (int i = 0; i < n; ++i) {
+    if (!nodes.fixed[i]) gear5_predict(nodes.state[i]);
+    nodes.positions[i] = nodes.state[i].position();
+    nodes.velocities[i] = nodes.fixed[i] ? Vec3::Zero() : nodes.state[i].velocity(nodes.dt);
+    nodes.forces[i].setZero();
+  }
+}
+
+void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
+{
+  const int n = nodes.size();
+  for (int i = 0; i < n; ++i) {
+    if (nodes.fixed[i]) {
+      for (int k = 1; k < 6; ++k) nodes.state[i].r[k].setZero();
+      continue;
+    }
+    gear5_correct(nodes.state[i], nodes.forces[i] / nodes.mass[i], nodes.dt, coefficients);
+  }
+}
+
+}    // namespace nscd::wire

@@ -1,0 +1,117 @@
+// The wire subcycle of one NSCD grain step, independent of LAMMPS.
+//
+// One NSCD step of length dt_NSCD runs n wire substeps of dt_SP = dt_NSCD / n with the
+// Gear-5 integrator. Grains are not integrated during the subcycle: each moves rigidly with
+// the velocity and angular velocity it had at the start of the NSCD step (GrainMotion), so
+// a wire wrapped round a moving grain is carried along instead of seeing the grain jump by
+// v dt_NSCD at the next grain step; zero velocities give "grains held fixed". The
+// wire->grain forces and torques are summed over the n substeps and their mean handed to
+// the NSCD solver as an external force (mean force = impulse / dt_NSCD).
+//
+// Usage (the caller owns the force computation: elastic forces, contacts, gravity, ...):
+//   const SubcyclePlan plan = plan_subcycle(dt_nscd, dt_sp_max);
+//   grains.reset(num_grains);
+//   run_subcycle(plan, coefficients, nodes, grains,
+//       [&](const SubstepInfo &s, const std::vector<Vec3> &x, const std::vector<Vec3> &v,
+//           std::vector<Vec3> &f, GrainForceAccumulator &g) { ... f[i] += ...; g.add(...); });
+//   grains.mean_force(j), grains.mean_torque(j)  ->  NSCD external force on grain j.
+#pragma once
+
+#include "math/types.h"
+#include "wire/gear5.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace nscd::wire {
+
+struct SubcyclePlan {
+  int substeps = 1;
+  double dt_sp = 0.0;
+};
+
+// n = requested_substeps if > 0, else ceil(dt_nscd / dt_sp_max); dt_sp = dt_nscd / n.
+// Throws std::invalid_argument if the steps are not positive or if the requested n gives a
+// dt_SP above dt_sp_max (the message names the n that would do).
+SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_substeps = 0);
+
+// Rigid motion of a grain over the NSCD step at its start-of-step velocities.
+struct GrainMotion {
+  Pose start;
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();    // world frame
+
+  // Pose after time tau: position + tau v, orientation turned by tau * omega.
+  Pose pose_at(double tau) const;
+  // Velocity of the material point now at world_point, when the grain is at pose_at(tau).
+  Vec3 point_velocity(const Vec3 &world_point, double tau) const;
+};
+
+// Sums of wire->grain forces and torques (about each grain's centre) over the substeps.
+// No allocation after reset() unless the grain count grows.
+class GrainForceAccumulator {
+ public:
+  void reset(int num_grains);
+  // Force on grain `grain` applied at lever_arm = contact point - grain centre.
+  void add(int grain, const Vec3 &force, const Vec3 &lever_arm)
+  {
+    force_sum_[grain] += force;
+    torque_sum_[grain] += lever_arm.cross(force);
+  }
+  void count_substep() { ++substeps_; }
+
+  int num_grains() const { return static_cast<int>(force_sum_.size()); }
+  int substeps() const { return substeps_; }
+  // Means over the substeps counted so far (zero if none).
+  Vec3 mean_force(int grain) const;
+  Vec3 mean_torque(int grain) const;
+
+ private:
+  std::vector<Vec3> force_sum_;
+  std::vector<Vec3> torque_sum_;
+  int substeps_ = 0;
+};
+
+// The wire nodes: Gear state, mass, fixed flag, plus scratch arrays reused every substep.
+struct WireNodeSet {
+  std::vector<Gear5State> state;
+  std::vector<double> mass;
+  std::vector<std::uint8_t> fixed;    // 1: position kept, velocity zero (clamps, anchors)
+  double dt = 0.0;                    // step the scaled derivatives refer to
+
+  // Scratch, sized by resize(): predicted positions/velocities and the forces.
+  std::vector<Vec3> positions, velocities, forces;
+
+  int size() const { return static_cast<int>(state.size()); }
+  // Nodes at rest at the given positions with the given mass each, none fixed.
+  void reset(const std::vector<Vec3> &initial_positions, double node_mass, double step);
+};
+
+struct SubstepInfo {
+  int index;        // 0 .. n-1
+  double time;      // time since the start of the NSCD step of the predicted state
+  double dt;        // dt_SP
+};
+
+// Predicts every free node and fills nodes.positions / nodes.velocities; zeroes forces.
+void predict_wire_nodes(WireNodeSet &nodes);
+// Corrects every free node with a = force / mass; fixed nodes stay put at rest.
+void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);
+// Brings nodes.dt to dt (rescales the scaled derivatives) and sizes the scratch arrays.
+void prepare_wire_nodes(WireNodeSet &nodes, double dt);
+
+template <class ForceFn>
+void run_subcycle(const SubcyclePlan &plan, const std::array<double, 6> &coefficients,
+                  WireNodeSet &nodes, GrainForceAccumulator &grains, ForceFn &&compute_forces)
+{
+  prepare_wire_nodes(nodes, plan.dt_sp);
+  for (int k = 0; k < plan.substeps; ++k) {
+    predict_wire_nodes(nodes);
+    const SubstepInfo info{k, (k + 1) * plan.dt_sp, plan.dt_sp};
+    compute_forces(info, nodes.positions, nodes.velocities, nodes.forces, grains);
+    grains.count_substep();
+    correct_wire_nodes(nodes, coefficients);
+  }
+}
+
+}    // namespace nscd::wire

@@ -1,0 +1,233 @@
+// Gear-5 predictor-corrector on the harmonic and damped oscillators: global order,
+// long-run energy behaviour, and the stability limits (measured by bisection on runs).
+#include "wire/gear5.h"
+#include "wire/stability.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+using namespace nscd;
+using namespace nscd::wire;
+
+namespace {
+
+// x'' = -w^2 x - g x' with w = 1, started from x = 1, v = 0 with exact scaled derivatives
+// (so the measured error is the method's, not the start's).
+Gear5State exact_start(double dt, double g)
+{
+  double d[6] = {1.0, 0.0};
+  for (int n = 0; n + 2 < 6; ++n) d[n + 2] = -d[n] - g * d[n + 1];
+  Gear5State s;
+  double scale = 1.0;
+  for (int k = 0; k < 6; ++k) {
+    s.r[k] = Vec3(d[k] * scale, 0, 0);
+    scale *= dt / (k + 1);
+  }
+  return s;
+}
+
+double exact_position(double t, double g)
+{
+  const double z = g / 2, wd = std::sqrt(1 - z * z);
+  return std::exp(-z * t) * (std::cos(wd * t) + z / wd * std::sin(wd * t));
+}
+
+void step(Gear5State &s, double dt, double g, const std::array<double, 6> &c)
+{
+  gear5_predict(s);
+  const double x = s.r[0].x(), v = s.r[1].x() / dt;
+  gear5_correct(s, Vec3(-x - g * v, 0, 0), dt, c);
+}
+
+// Max |x - x_exact| over t in [0, T].
+double max_error(double dt, double T, double g, GearCorrector kind)
+{
+  const auto c = gear5_corrector_coefficients(kind);
+  Gear5State s = exact_start(dt, g);
+  const long n = std::lround(T / dt);
+  double worst = 0;
+  for (long i = 1; i <= n; ++i) {
+    step(s, dt, g, c);
+    worst = std::max(worst, std::abs(s.r[0].x() - exact_position(i * dt, g)));
+  }
+  return worst;
+}
+
+double observed_order(double dt, double T, double g, GearCorrector kind)
+{
+  return std::log2(max_error(dt, T, g, kind) / max_error(dt / 2, T, g, kind));
+}
+
+// Energy x^2 + v^2 (times 1/2) of the undamped oscillator: max over the last tenth of the
+// run divided by max over its second tenth. > 1 means a growing mode. The start has r3..r5
+// = 0, which seeds the parasitic modes of the method so that a growing one shows.
+double energy_growth(double w_dt, double periods, double g_dt, GearCorrector kind)
+{
+  const auto c = gear5_corrector_coefficients(kind);
+  const double dt = w_dt;    // w = 1
+  Gear5State s = gear5_start(Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(-1, 0, 0), dt);
+  const long n = std::lround(periods * 2 * M_PI / dt);
+  double early = 0, late = 0;
+  for (long i = 0; i < n; ++i) {
+    step(s, dt, g_dt / dt, c);
+    const double x = s.r[0].x(), v = s.r[1].x() / dt, e = x * x + v * v;
+    if (!std::isfinite(e) || e > 1e6) return std::numeric_limits<double>::infinity();
+    if (i > n / 10 && i < n / 5) early = std::max(early, e);
+    if (i > n * 9 / 10) late = std::max(late, e);
+  }
+  return late / early;
+}
+
+// Speed growth of a free particle under pure drag x'' = -g x' (the physical solution
+// decays by exp(-g t)): > 1 means the scheme amplifies.
+double drag_growth(double g_dt)
+{
+  const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+  const double dt = 1.0, g = g_dt;
+  Gear5State s = gear5_start(Vec3::Zero(), Vec3(1, 0, 0), Vec3(-g, 0, 0), dt);
+  double early = 0, late = 0;
+  for (int i = 0; i < 4000; ++i) {
+    gear5_predict(s);
+    gear5_correct(s, -g * s.velocity(dt), dt, c);
+    const double v = std::abs(s.velocity(dt).x());
+    if (!std::isfinite(v)) return std::numeric_limits<double>::infinity();
+    if (i == 100) early = v;
+    if (i == 3999) late = v;
+  }
+  return late / early;
+}
+
+// Largest x in [lo, hi] with stable(x), by bisection (stable region assumed an interval).
+template <class Stable>
+double bisect_limit(double lo, double hi, Stable stable)
+{
+  for (int it = 0; it < 30; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (stable(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}    // namespace
+
+TEST(Gear5, PredictorIsExactForQuinticPolynomials)
+{
+  // x(t) = t^5: the Taylor shift of the scaled derivatives is exact.
+  const double dt = 0.3;
+  Gear5State s;
+  s.r[5] = Vec3(std::pow(dt, 5), 0, 0);    // dt^5/5! * 5! = dt^5, all lower derivatives 0 at t=0
+  for (int i = 1; i <= 4; ++i) {
+    gear5_predict(s);
+    EXPECT_NEAR(s.r[0].x(), std::pow(i * dt, 5), 1e-12);
+    EXPECT_NEAR(s.velocity(dt).x(), 5 * std::pow(i * dt, 4), 1e-11);
+  }
+}
+
+TEST(Gear5, GlobalOrderOnOscillators)
+{
+  // Measured over 20 time units (~3 periods), halving dt from 0.04 to 0.02. Expected:
+  // order 5 whenever the force depends on the velocity (both correctors); the undamped
+  // oscillator is integrated to order 5 by 3/16 and to order 6 by 3/20.
+  struct Case { double g; GearCorrector kind; double order; };
+  for (const Case &c : {Case{0.0, GearCorrector::ThreeSixteenths, 5.0},
+                        Case{0.0, GearCorrector::ThreeTwentieths, 6.0},
+                        Case{0.2, GearCorrector::ThreeSixteenths, 5.0},
+                        Case{0.2, GearCorrector::ThreeTwentieths, 5.0},
+                        Case{1.0, GearCorrector::ThreeSixteenths, 5.0}}) {
+    const double p = observed_order(0.04, 20.0, c.g, c.kind);
+    std::printf("[gear5] g=%.1f c0=%s: observed order %.3f (error at dt=0.02: %.2e)\n", c.g,
+                c.kind == GearCorrector::ThreeSixteenths ? "3/16" : "3/20", p,
+                max_error(0.02, 20.0, c.g, c.kind));
+    EXPECT_NEAR(p, c.order, 0.15);
+  }
+}
+
+TEST(Gear5, LongRunEnergyDriftIsSmallAndOfKnownSign)
+{
+  // 1000 periods at w dt = 0.05 (126 steps per period). 3/16 loses energy slowly
+  // (numerical damping), 3/20 gains slowly; both drift rates stay below 1e-7 per period.
+  for (GearCorrector kind : {GearCorrector::ThreeSixteenths, GearCorrector::ThreeTwentieths}) {
+    const auto c = gear5_corrector_coefficients(kind);
+    const double dt = 0.05;
+    Gear5State s = exact_start(dt, 0.0);
+    const long n = std::lround(1000 * 2 * M_PI / dt);
+    for (long i = 0; i < n; ++i) step(s, dt, 0.0, c);
+    const double x = s.r[0].x(), v = s.velocity(dt).x();
+    const double drift_per_period = (x * x + v * v - 1.0) / 1000;
+    std::printf("[gear5] c0=%s: relative energy drift per period at w dt = 0.05: %.3e\n",
+                kind == GearCorrector::ThreeSixteenths ? "3/16" : "3/20", drift_per_period);
+    EXPECT_LT(std::abs(drift_per_period), 1e-7);
+    if (kind == GearCorrector::ThreeSixteenths) EXPECT_LT(drift_per_period, 0.0);
+    else EXPECT_GT(drift_per_period, 0.0);
+  }
+}
+
+TEST(Gear5Stability, FrequencyLimitMatchesBisection)
+{
+  // Undamped: the largest w dt with no growing mode over 1000 periods, by bisection.
+  const double limit = bisect_limit(0.05, 1.0, [](double w_dt) {
+    return energy_growth(w_dt, 1000, 0.0, GearCorrector::ThreeSixteenths) <= 1.0;
+  });
+  std::printf("[gear5] measured stability limit (3/16, undamped): w dt = %.4f\n", limit);
+  EXPECT_NEAR(limit, gear5_frequency_limit(GearCorrector::ThreeSixteenths), 0.003);
+  EXPECT_GT(energy_growth(1.02 * limit, 1000, 0.0, GearCorrector::ThreeSixteenths), 1.0);
+
+  // 3/20 amplifies an undamped oscillation even at w dt = 0.05, only just.
+  const double growth = energy_growth(0.05, 1000, 0.0, GearCorrector::ThreeTwentieths);
+  EXPECT_GT(growth, 1.0);
+  EXPECT_LT(growth, 1.0 + 1e-5);
+  // ...and stays usable at its documented practical limit: < 1 % growth in 1000 periods.
+  EXPECT_LT(energy_growth(gear5_frequency_limit(GearCorrector::ThreeTwentieths), 1000, 0.0,
+                          GearCorrector::ThreeTwentieths), 1.01);
+}
+
+TEST(Gear5Stability, DampingLimitMatchesBisection)
+{
+  const double limit = bisect_limit(0.01, 1.0, [](double g_dt) { return drag_growth(g_dt) <= 1.0; });
+  std::printf("[gear5] measured stability limit for pure drag: g dt = %.4f\n", limit);
+  EXPECT_NEAR(limit, gear5_damping_limit(), 0.002);
+}
+
+TEST(Gear5Stability, CombinedRuleIsStableOnMixedCases)
+{
+  // dt = 1 / (w / w_limit + g / g_limit) with w = 1 for damping ratios from tiny to heavy.
+  for (double g : {0.01, 0.1, 0.3, 0.6, 1.0, 2.0, 5.0}) {
+    const double dt = 1.0 / (1.0 / gear5_frequency_limit(GearCorrector::ThreeSixteenths) +
+                             g / gear5_damping_limit());
+    Gear5State s = gear5_start(Vec3(1, 0, 0), Vec3::Zero(), Vec3(-1, 0, 0), dt);
+    const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+    double peak_late = 0;
+    for (int i = 0; i < 20000; ++i) {
+      step(s, dt, g, c);
+      if (i > 10000) peak_late = std::max(peak_late, s.r[0].norm() + s.velocity(dt).norm());
+    }
+    EXPECT_LT(peak_late, 2.0) << "g=" << g << " dt=" << dt;    // decays, never grows
+  }
+}
+
+TEST(Gear5, StepChangeKeepsTheTrajectory)
+{
+  // Halve dt mid-run: rescaling r_k by 2^-k continues the same solution (to the method's error).
+  const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+  Gear5State s = exact_start(0.02, 0.0);
+  for (int i = 0; i < 250; ++i) step(s, 0.02, 0.0, c);
+  gear5_change_step(s, 0.02, 0.01);
+  for (int i = 0; i < 500; ++i) step(s, 0.01, 0.0, c);
+  EXPECT_NEAR(s.r[0].x(), std::cos(10.0), 1e-8);
+  EXPECT_NEAR(s.velocity(0.01).x(), -std::sin(10.0), 1e-8);
+  EXPECT_THROW(gear5_change_step(s, 0.01, 0.0), std::invalid_argument);
+}
+
+TEST(Gear5, PackUnpackRoundTrips)
+{
+  Gear5State s;
+  for (int k = 0; k < 6; ++k) s.r[k] = Vec3(k, 10 + k, 100 + k);
+  double buffer[Gear5State::kNumDoubles];
+  s.pack(buffer);
+  Gear5State t;
+  t.unpack(buffer);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(s.r[k], t.r[k]);
+}

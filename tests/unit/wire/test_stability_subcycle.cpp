@@ -1,0 +1,146 @@
+// Stability estimate, subcycle planning and the averaged wire->grain force.
+#include "wire/soft_contact.h"
+#include "wire/stability.h"
+#include "wire/subcycle.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace nscd;
+using namespace nscd::wire;
+
+TEST(WireStability, FrequencyBoundAddsAxialBendingAndContactStiffness)
+{
+  WireStiffness w;
+  w.node_mass = 0.5;
+  w.element_length = 0.1;
+  w.k_elo = 20.0;       // k_elo / l = 200
+  w.k_rot = 0.01;       // 4 k_rot / l^2 = 4
+  w.k_n = 100.0;        // n_c k_n / 2 = 100 with n_c = 2
+  w.contacts_per_node = 2.0;
+  EXPECT_NEAR(wire_max_angular_frequency(w), std::sqrt(4.0 * 304.0 / 0.5), 1e-12);
+  w.gamma_contact = 0.25;
+  w.node_damping = 0.5;
+  EXPECT_NEAR(wire_max_damping_rate(w), (2 * 2 * 0.25 + 0.5) / 0.5, 1e-12);
+  const double expected = 0.5 / (wire_max_angular_frequency(w) / 0.313 + 3.0 / 0.163);
+  EXPECT_NEAR(max_stable_wire_step(w), expected, 1e-15);
+}
+
+TEST(WireStability, TooLargeStepIsRejectedWithTheWayOut)
+{
+  WireStiffness w;
+  w.node_mass = 1e-3;
+  w.element_length = 0.01;
+  w.k_elo = 1e3;
+  const double dt_max = max_stable_wire_step(w);
+  EXPECT_NO_THROW(check_wire_step(dt_max, w));
+  try {
+    check_wire_step(3.5 * dt_max, w);
+    FAIL() << "step above the limit accepted";
+  } catch (const std::invalid_argument &e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("dt_SP"), std::string::npos) << what;
+    EXPECT_NE(what.find("at least 4 times more wire substeps"), std::string::npos) << what;
+  }
+  EXPECT_THROW(check_wire_step(-1.0, w), std::invalid_argument);
+  w.node_mass = 0.0;
+  EXPECT_THROW(max_stable_wire_step(w), std::invalid_argument);
+}
+
+TEST(Subcycle, PlanDividesTheGrainStep)
+{
+  EXPECT_EQ(plan_subcycle(1e-3, 1e-4).substeps, 10);    // exact ratio: no extra step
+  EXPECT_EQ(plan_subcycle(1e-3, 0.9e-4).substeps, 12);
+  const SubcyclePlan p = plan_subcycle(1e-3, 0.9e-4);
+  EXPECT_NEAR(p.dt_sp * p.substeps, 1e-3, 1e-18);
+  EXPECT_EQ(plan_subcycle(1e-3, 1e-4, 25).substeps, 25);
+  EXPECT_EQ(plan_subcycle(1e-3, 1.0).substeps, 1);
+  try {
+    plan_subcycle(1e-3, 1e-4, 5);
+    FAIL() << "too few substeps accepted";
+  } catch (const std::invalid_argument &e) {
+    EXPECT_NE(std::string(e.what()).find("at least 10 substeps"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(plan_subcycle(0.0, 1e-4), std::invalid_argument);
+}
+
+TEST(Subcycle, GrainMotionMovesRigidly)
+{
+  GrainMotion g;
+  g.start.position = Vec3(1, 0, 0);
+  g.velocity = Vec3(0, 0, 2);
+  g.angular_velocity = Vec3(0, 0, M_PI);    // half a turn per unit time about z
+  const Pose p = g.pose_at(0.5);
+  EXPECT_NEAR((p.position - Vec3(1, 0, 1)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((p.to_world(Vec3(1, 0, 0)) - Vec3(1, 1, 1)).norm(), 0.0, 1e-15);    // x turned to y
+  EXPECT_NEAR((g.point_velocity(Vec3(1, 1, 1), 0.5) - Vec3(-M_PI, 0, 2)).norm(), 0.0, 1e-15);
+}
+
+TEST(Subcycle, FreeFallIsExactAcrossChangingSubsteps)
+{
+  // Constant force: the trajectory is a parabola, which Gear-5 reproduces exactly when
+  // started with the right acceleration, also when the substep changes between grain
+  // steps (the scaled derivatives are rescaled).
+  WireNodeSet nodes;
+  nodes.reset({Vec3(0, 0, 1)}, 2.0, 1e-4);
+  nodes.state[0] = gear5_start(Vec3(0, 0, 1), Vec3(0.5, 0, 0), Vec3(0, 0, -9.81), 1e-4);
+  GrainForceAccumulator grains;
+  grains.reset(0);
+  const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+  const auto gravity = [](const SubstepInfo &, const std::vector<Vec3> &, const std::vector<Vec3> &,
+                          std::vector<Vec3> &f, GrainForceAccumulator &) { f[0] = Vec3(0, 0, -2.0 * 9.81); };
+  run_subcycle(plan_subcycle(1e-2, 1e-4), c, nodes, grains, gravity);
+  run_subcycle(plan_subcycle(1e-2, 3e-4), c, nodes, grains, gravity);    // 34 substeps
+  const double t = 2e-2;
+  EXPECT_NEAR((nodes.state[0].position() - Vec3(0.5 * t, 0, 1 - 0.5 * 9.81 * t * t)).norm(), 0.0, 1e-13);
+  EXPECT_NEAR(nodes.state[0].velocity(nodes.dt).z(), -9.81 * t, 1e-11);
+  EXPECT_EQ(grains.substeps(), 134);
+}
+
+TEST(Subcycle, AveragedForceOnGrainCarriesTheWireWeight)
+{
+  // One wire node (mass m) rests, under gravity, on a fixed spherical grain of radius R,
+  // off the top so that friction holds it. Once settled, the mean wire->grain force over a
+  // subcycle is the node's weight, and the mean torque is (contact arm) x weight.
+  const double R = 1.0, r_w = 0.05, m = 0.01, g = 9.81;
+  SoftContactLaw law;
+  law.k_n = 1e3;
+  law.gamma_n = 2 * std::sqrt(law.k_n * m);    // critically damped
+  law.k_t = 5e2;
+  law.gamma_t = 2 * std::sqrt(law.k_t * m);
+  law.mu_s = law.mu_d = 1.0;
+  validate(law);
+  const Vec3 start = (R + r_w) * Vec3(0.2, 0, 1).normalized();
+  WireNodeSet nodes;
+  nodes.reset({start}, m, 1e-4);
+  TangentialHistory history;
+  GrainMotion grain;    // at rest at the origin
+  GrainForceAccumulator grains;
+  const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+  const auto forces = [&](const SubstepInfo &s, const std::vector<Vec3> &x, const std::vector<Vec3> &v,
+                          std::vector<Vec3> &f, GrainForceAccumulator &acc) {
+    f[0] = Vec3(0, 0, -m * g);
+    const Pose pose = grain.pose_at(s.time);
+    const Vec3 d = x[0] - pose.position;
+    const Vec3 n = d.normalized();    // from grain (B) to node (A)
+    const double overlap = R + r_w - d.norm();
+    const Vec3 contact_point = pose.position + R * n;
+    const Vec3 v_rel = v[0] - grain.point_velocity(contact_point, s.time);
+    const SoftContactForce fc = soft_contact_force(law, n, overlap, v_rel, s.dt, history);
+    f[0] += fc.force;
+    acc.add(0, -fc.force, contact_point - pose.position);
+  };
+  const double dt_max = 1e-4;
+  for (int step = 0; step < 200; ++step) {    // 200 grain steps of 1e-2
+    grains.reset(1);
+    run_subcycle(plan_subcycle(1e-2, dt_max), c, nodes, grains, forces);
+  }
+  const Vec3 weight(0, 0, -m * g);
+  const Vec3 n = nodes.state[0].position().normalized();
+  EXPECT_EQ(grains.substeps(), 100);
+  EXPECT_NEAR((grains.mean_force(0) - weight).norm(), 0.0, 1e-9 * m * g);
+  EXPECT_NEAR((grains.mean_torque(0) - (R * n).cross(weight)).norm(), 0.0, 1e-9 * m * g * R);
+  EXPECT_LT(nodes.state[0].velocity(nodes.dt).norm(), 1e-9);    // stuck, not sliding off
+}
