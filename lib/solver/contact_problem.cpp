@@ -1,0 +1,333 @@
+#include "solver/contact_problem.h"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+
+namespace nscd {
+namespace {
+
+std::string contact_label(std::size_t index) { return "contact " + std::to_string(index); }
+
+// Orthonormal basis (n, t1, t2) from a unit n without branches on its components' size
+// (Duff et al. 2017); rows of the returned matrix.
+Mat3 contact_frame(const Vec3 &n)
+{
+  const double sign = std::copysign(1.0, n.z());
+  const double a = -1.0 / (sign + n.z());
+  const double b = n.x() * n.y() * a;
+  Mat3 frame;
+  frame.row(0) = n;
+  frame.row(1) = Vec3(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x());
+  frame.row(2) = Vec3(b, sign + n.y() * n.y() * a, -n.y());
+  return frame;
+}
+
+Mat3 cross_matrix(const Vec3 &r)
+{
+  Mat3 m;
+  m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  return m;
+}
+
+ContactRegime classify(const Vec3 &P, double mu)
+{
+  if (!(P[0] > 0.0)) return ContactRegime::open;
+  if (mu > 0.0 && std::hypot(P[1], P[2]) < (1.0 - 1e-9) * mu * P[0]) return ContactRegime::stick;
+  return ContactRegime::slip;
+}
+
+void validate_body(const SolverBody &body, std::size_t index)
+{
+  const std::string label = "body " + std::to_string(index);
+  if (!(body.inv_mass >= 0.0) || !std::isfinite(body.inv_mass))
+    throw SolverError(label + ": inverse mass " + std::to_string(body.inv_mass) +
+                      " must be finite and >= 0 (0 for a body of infinite mass)");
+  if (!body.inv_inertia.allFinite() || !body.velocity.allFinite() ||
+      !body.angular_velocity.allFinite() || !body.position.allFinite() ||
+      !body.external_impulse.allFinite() || !body.external_angular_impulse.allFinite())
+    throw SolverError(label + ": position, velocity, inverse inertia or external impulse is "
+                      "not finite; check the state handed to the solver");
+}
+
+void validate_contact(const Contact &contact, std::size_t index, std::size_t n_bodies)
+{
+  const std::string label = contact_label(index);
+  const auto n = static_cast<long>(n_bodies);
+  if (contact.body_i < 0 || contact.body_i >= n)
+    throw SolverError(label + ": body_i = " + std::to_string(contact.body_i) +
+                      " is not a body index in [0, " + std::to_string(n) + ")");
+  if (contact.body_j != kEnvironment && (contact.body_j < 0 || contact.body_j >= n))
+    throw SolverError(label + ": body_j = " + std::to_string(contact.body_j) +
+                      " is neither a body index in [0, " + std::to_string(n) +
+                      ") nor kEnvironment (-1)");
+  if (contact.body_j == contact.body_i)
+    throw SolverError(label + ": a body cannot touch itself (body_i = body_j = " +
+                      std::to_string(contact.body_i) + ")");
+  const double length = contact.normal.norm();
+  if (!(std::abs(length - 1.0) <= 1e-6))
+    throw SolverError(label + ": normal has length " + std::to_string(length) +
+                      "; pass a unit vector pointing from body j to body i");
+  if (!std::isfinite(contact.gap) || !contact.point.allFinite() ||
+      !contact.wall_velocity.allFinite() || !contact.impulse.allFinite())
+    throw SolverError(label + ": gap, point, wall velocity or warm-start impulse is not finite");
+  if (!(contact.friction >= 0.0) || !std::isfinite(contact.friction))
+    throw SolverError(label + ": friction coefficient " + std::to_string(contact.friction) +
+                      " must be finite and >= 0");
+  if (!(contact.restitution >= 0.0 && contact.restitution <= 1.0))
+    throw SolverError(label + ": restitution " + std::to_string(contact.restitution) +
+                      " must lie in [0, 1]");
+}
+
+}    // namespace
+
+void SolverOptions::validate() const
+{
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw SolverError("solver time step dt = " + std::to_string(dt) + " must be > 0");
+  if (!(theta > 0.0 && theta <= 1.0))
+    throw SolverError("theta = " + std::to_string(theta) +
+                      " must lie in (0, 1] (0.5 for the midpoint rule, 1 for implicit Euler)");
+  if (!(relaxation > 0.0 && relaxation <= 1.0))
+    throw SolverError("relaxation omega = " + std::to_string(relaxation) +
+                      " must lie in (0, 1] (1 = plain Gauss-Seidel)");
+  if (!(tolerance > 0.0))
+    throw SolverError("solver tolerance " + std::to_string(tolerance) + " must be > 0");
+  if (max_sweeps < 1)
+    throw SolverError("max_sweeps = " + std::to_string(max_sweeps) + " must be >= 1");
+}
+
+void ResidualTerms::merge(const ResidualTerms &other)
+{
+  error_squared += other.error_squared;
+  scale_squared += other.scale_squared;
+  max_interpenetration = std::max(max_interpenetration, other.max_interpenetration);
+  contacts += other.contacts;
+  active += other.active;
+  sticking += other.sticking;
+  sliding += other.sliding;
+  local_failures += other.local_failures;
+}
+
+double ResidualTerms::residual() const
+{
+  if (error_squared == 0.0) return 0.0;
+  if (scale_squared == 0.0) return std::numeric_limits<double>::infinity();
+  return std::sqrt(error_squared / scale_squared);
+}
+
+void ContactProblem::prepare(const SolverOptions &options)
+{
+  options.validate();
+  options_ = options;
+  for (std::size_t b = 0; b < bodies.size(); ++b) validate_body(bodies[b], b);
+
+  rows_.resize(contacts.size());
+  order_.resize(contacts.size());
+  std::iota(order_.begin(), order_.end(), 0);
+  random_.seed(options.seed);
+  sweeps_done_ = 0;
+  local_failures_ = 0;
+
+  // Kinematics use the start-of-step velocities (u_n^- enters the active-contact rule),
+  // so rows are built before the external impulses are added.
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    validate_contact(contacts[c], c, bodies.size());
+    build_row(contacts[c], c, rows_[c]);
+  }
+  for (SolverBody &body : bodies) {
+    body.velocity += body.inv_mass * body.external_impulse;
+    body.angular_velocity += body.inv_inertia * body.external_angular_impulse;
+  }
+  synced_velocity_.resize(bodies.size());
+  synced_angular_velocity_.resize(bodies.size());
+  mark_synchronised();
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    Row &row = rows_[c];
+    if (row.inert) continue;
+    row.impulse = project_on_coulomb_cone(row.frame * contacts[c].impulse, row.mu);
+    row.regime = classify(row.impulse, row.mu);
+    apply_impulse_change(row, row.impulse);
+  }
+}
+
+void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &row) const
+{
+  const SolverBody &body_i = bodies[contact.body_i];
+  row.i = contact.body_i;
+  row.j = contact.body_j;
+  row.mu = contact.friction;
+  row.frame = contact_frame(contact.normal.normalized());
+  row.inv_mass_i = body_i.inv_mass;
+  row.angular_i = -row.frame * cross_matrix(contact.point - body_i.position);
+  row.spin_i = body_i.inv_inertia * row.angular_i.transpose();
+  row.delassus = body_i.inv_mass * Mat3::Identity() + row.angular_i * row.spin_i;
+  Vec3 u_start = row.frame * body_i.velocity + row.angular_i * body_i.angular_velocity;
+
+  if (row.j == kEnvironment) {
+    row.inv_mass_j = 0.0;
+    row.angular_j.setZero();
+    row.spin_j.setZero();
+    row.offset = -(row.frame * contact.wall_velocity);
+  } else {
+    const SolverBody &body_j = bodies[row.j];
+    row.inv_mass_j = body_j.inv_mass;
+    row.angular_j = -row.frame * cross_matrix(contact.point - body_j.position);
+    row.spin_j = body_j.inv_inertia * row.angular_j.transpose();
+    row.delassus += body_j.inv_mass * Mat3::Identity() + row.angular_j * row.spin_j;
+    row.offset.setZero();
+    u_start -= row.frame * body_j.velocity + row.angular_j * body_j.angular_velocity;
+  }
+  if (row.j == kEnvironment) u_start += row.offset;
+  // Symmetrise: A B is symmetric in exact arithmetic only.
+  row.delassus = 0.5 * (row.delassus + row.delassus.transpose()).eval();
+
+  row.inert = row.delassus.isZero(0.0);
+  row.impulse.setZero();
+  row.regime = ContactRegime::open;
+  if (!row.inert) {
+    const Eigen::LLT<Mat3> cholesky(row.delassus);
+    if (cholesky.info() != Eigen::Success || !(row.delassus(0, 0) > 0.0))
+      throw SolverError(contact_label(index) + " between bodies " + std::to_string(row.i) +
+                        " and " + std::to_string(row.j) +
+                        ": the Delassus block is singular (a body of zero inverse mass "
+                        "but free rotation?); give such bodies zero inverse inertia too");
+    row.delassus_inverse = cholesky.solve(Mat3::Identity());
+  }
+
+  // Active-contact rule (doc/nscd_solver.md): predicted gap with u_n^+ = 0, then the
+  // lowest admissible end-of-step normal velocity.
+  const double theta_dt = options_.theta * options_.dt;
+  const double u_n_start = u_start[0];
+  row.gap_start = contact.gap + (1.0 - options_.theta) * options_.dt * u_n_start;
+  if (row.gap_start > 0.0)
+    row.normal_shift = -row.gap_start / theta_dt;
+  else
+    row.normal_shift = contact.restitution * std::max(-u_n_start, 0.0);
+  row.offset[0] -= row.normal_shift;
+}
+
+void ContactProblem::mark_synchronised()
+{
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    synced_velocity_[b] = bodies[b].velocity;
+    synced_angular_velocity_[b] = bodies[b].angular_velocity;
+  }
+}
+
+Vec3 ContactProblem::local_velocity(const Row &row) const
+{
+  const SolverBody &body_i = bodies[row.i];
+  Vec3 u = row.frame * body_i.velocity + row.angular_i * body_i.angular_velocity + row.offset;
+  if (row.j != kEnvironment) {
+    const SolverBody &body_j = bodies[row.j];
+    u -= row.frame * body_j.velocity + row.angular_j * body_j.angular_velocity;
+  }
+  return u;
+}
+
+void ContactProblem::apply_impulse_change(const Row &row, const Vec3 &dP)
+{
+  const Vec3 world = row.frame.transpose() * dP;
+  SolverBody &body_i = bodies[row.i];
+  body_i.velocity += row.inv_mass_i * world;
+  body_i.angular_velocity += row.spin_i * dP;
+  if (row.j != kEnvironment) {
+    SolverBody &body_j = bodies[row.j];
+    body_j.velocity -= row.inv_mass_j * world;
+    body_j.angular_velocity -= row.spin_j * dP;
+  }
+}
+
+void ContactProblem::relax(Row &row)
+{
+  if (row.inert) return;
+  const Vec3 u_free = local_velocity(row) - row.delassus * row.impulse;
+  const LocalSolution local =
+      solve_local_coulomb(row.delassus, row.delassus_inverse, u_free, row.mu);
+  if (!local.exact) ++local_failures_;
+  const double omega = options_.relaxation;
+  const Vec3 impulse = omega * local.impulse + (1.0 - omega) * row.impulse;
+  apply_impulse_change(row, impulse - row.impulse);
+  row.impulse = impulse;
+  row.regime = local.regime;
+}
+
+void ContactProblem::sweep()
+{
+  switch (options_.order) {
+  case SweepOrder::shuffled:
+    std::shuffle(order_.begin(), order_.end(), random_);
+    [[fallthrough]];
+  case SweepOrder::as_given:
+    for (const int c : order_) relax(rows_[c]);
+    break;
+  case SweepOrder::forward_backward:
+    if (sweeps_done_ % 2 == 0)
+      for (auto c = order_.begin(); c != order_.end(); ++c) relax(rows_[*c]);
+    else
+      for (auto c = order_.rbegin(); c != order_.rend(); ++c) relax(rows_[*c]);
+    break;
+  }
+  ++sweeps_done_;
+}
+
+ResidualTerms ContactProblem::residual_terms() const
+{
+  ResidualTerms terms;
+  terms.local_failures = local_failures_;
+  const double theta_dt = options_.theta * options_.dt;
+  for (const Row &row : rows_) {
+    ++terms.contacts;
+    if (row.inert) continue;
+    const Vec3 u = local_velocity(row);
+    const Vec3 u_free = u - row.delassus * row.impulse;
+    const double scale = row.delassus(0, 0);
+    const double error = coulomb_residual(row.delassus, u_free, row.mu, row.impulse, scale);
+    terms.error_squared += error * error;
+    terms.scale_squared += (scale * row.impulse).squaredNorm();
+
+    const double gap_end = row.gap_start + theta_dt * (u[0] + row.normal_shift);
+    terms.max_interpenetration = std::max(terms.max_interpenetration, -gap_end);
+    switch (classify(row.impulse, row.mu)) {
+    case ContactRegime::open: break;
+    case ContactRegime::stick: ++terms.active; ++terms.sticking; break;
+    case ContactRegime::slip: ++terms.active; ++terms.sliding; break;
+    }
+  }
+  return terms;
+}
+
+void ContactProblem::finish()
+{
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const Row &row = rows_[c];
+    contacts[c].impulse = row.frame.transpose() * row.impulse;
+    contacts[c].regime = classify(row.impulse, row.mu);
+  }
+}
+
+SolveReport solve(ContactProblem &problem, const SolverOptions &options)
+{
+  problem.prepare(options);
+  SolveReport report;
+  for (;;) {
+    report.terms = problem.residual_terms();
+    report.residual = report.terms.residual();
+    if (report.residual <= options.tolerance) {
+      report.converged = true;
+      break;
+    }
+    if (problem.sweeps_done() >= options.max_sweeps) break;
+    problem.sweep();
+  }
+  report.sweeps = problem.sweeps_done();
+  problem.finish();
+  return report;
+}
+
+}    // namespace nscd

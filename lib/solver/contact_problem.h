@@ -1,0 +1,198 @@
+// The NSCD contact problem of one time step and its nonlinear Gauss-Seidel solver
+// (Moreau-Jean time stepping, Signorini condition and exact Coulomb friction, no
+// regularisation). See doc/nscd_solver.md for the equations.
+//
+// Single rank:   fill bodies and contacts, then solve(problem, options).
+// Under domain decomposition the caller drives the loop itself:
+//   problem.prepare(options);                  // free velocities, Delassus blocks, warm start
+//   exchange();                                // prepare's warm start moved ghosts too
+//   repeat { problem.sweep();                  // one pass over the local contacts
+//            exchange();
+//            terms = problem.residual_terms(); // sums and maxima: reduce across ranks
+//   } until reduced terms.residual() <= tolerance or max_sweeps;
+//   problem.finish();                          // impulses back into contacts
+// exchange(): reverse communication adds each ghost's velocity_correction() and
+// angular_velocity_correction() to its owner's velocity, forward communication copies the
+// owners' velocities to their ghosts, then every rank calls mark_synchronised().
+// Ghost copies must enter prepare() with the same velocity and external impulses as
+// their owners, so that every rank starts from the same free velocity.
+#pragma once
+
+#include "math/types.h"
+#include "solver/local_coulomb.h"
+
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace nscd {
+
+// Bad solver input (the message names the offending value and the fix).
+class SolverError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// body_j of a contact with the motionless or driven environment (e.g. an analytic wall).
+constexpr int kEnvironment = -1;
+
+// A rigid body as the solver sees it (local owned bodies and ghost copies alike).
+// Bodies of infinite mass (walls, fixed grains) have inv_mass = 0 and inv_inertia = 0;
+// their (prescribed) velocity is never changed by the solver.
+struct SolverBody {
+  Vec3 position = Vec3::Zero();            // centre of mass, world frame
+  Vec3 velocity = Vec3::Zero();            // in: start of step; after solve: end of step
+  Vec3 angular_velocity = Vec3::Zero();    // world frame, same life cycle
+  // dt * F_ext and dt * (T_ext + gyroscopic torque), world frame; prepare() adds
+  // M^-1 times these to the velocities (the free velocity).
+  Vec3 external_impulse = Vec3::Zero();
+  Vec3 external_angular_impulse = Vec3::Zero();
+  double inv_mass = 0.0;
+  Mat3 inv_inertia = Mat3::Zero();         // world frame, see world_inverse_inertia()
+};
+
+// Persistent identity of a contact for warm starting: the two bodies' global ids (tags)
+// and a feature code chosen by the geometry (which vertex/edge/face pair touches). The
+// feature must not depend on which body is called i (see WarmStartCache).
+struct ContactKey {
+  std::int64_t tag_i = 0;
+  std::int64_t tag_j = 0;
+  std::uint64_t feature = 0;
+};
+
+struct Contact {
+  int body_i = 0;                  // index into ContactProblem::bodies
+  int body_j = kEnvironment;       // index, or kEnvironment
+  Vec3 point = Vec3::Zero();       // world contact point
+  Vec3 normal = Vec3::UnitZ();     // unit normal, pointing from j to i
+  double gap = 0.0;                // signed distance along the normal, < 0 = overlap
+  double friction = 0.0;           // Coulomb coefficient mu >= 0
+  double restitution = 0.0;        // Newton normal restitution e in [0, 1]
+  Vec3 wall_velocity = Vec3::Zero();    // velocity of the environment at the point (j < 0)
+  ContactKey key;
+  // In: warm-start impulse on body i (world frame). Out (finish()): the solved impulse.
+  Vec3 impulse = Vec3::Zero();
+  ContactRegime regime = ContactRegime::open;    // out (finish())
+};
+
+enum class SweepOrder : unsigned char {
+  as_given,            // contacts in the order of the contacts vector
+  shuffled,            // a new random permutation every sweep (seeded, reproducible)
+  forward_backward,    // alternate forward and backward passes (symmetric Gauss-Seidel)
+};
+
+struct SolverOptions {
+  double dt = 0.0;             // time step, > 0
+  double theta = 0.5;          // theta of the theta-method, in (0, 1]
+  double relaxation = 1.0;     // omega in (0, 1]: P = omega P_local + (1 - omega) P_old
+  SweepOrder order = SweepOrder::as_given;
+  std::uint64_t seed = 12345;  // for SweepOrder::shuffled
+  double tolerance = 1e-6;     // on the scale-free residual (see ResidualTerms)
+  int max_sweeps = 1000;
+
+  // Throws SolverError naming the bad option.
+  void validate() const;
+};
+
+// Per-rank contributions to the convergence test and the diagnostics. Every field is a
+// sum or a maximum so ranks can reduce them (MPI_SUM / MPI_MAX) and call residual().
+struct ResidualTerms {
+  double error_squared = 0.0;   // sum over contacts of |r_c|^2, r_c = De Saxce residual
+  double scale_squared = 0.0;   // sum over contacts of |W_nn P_c|^2 (velocity scale)
+  double max_interpenetration = 0.0;    // max over contacts of -(predicted end-of-step gap)
+  long contacts = 0;
+  long active = 0;              // P_n > 0
+  long sticking = 0;
+  long sliding = 0;             // includes active frictionless contacts
+  long local_failures = 0;      // local solves that found no exact slip root (expect 0)
+
+  void merge(const ResidualTerms &other);
+  // sqrt(error_squared / scale_squared): a relative velocity error, independent of units,
+  // masses and dt. 0 when there is nothing to solve; +inf when a contact that must push
+  // has no impulse yet.
+  double residual() const;
+};
+
+struct SolveReport {
+  int sweeps = 0;
+  double residual = 0.0;
+  bool converged = false;
+  ResidualTerms terms;
+};
+
+namespace detail {
+// Data of one contact precomputed by prepare(): local velocity u = F v_i + A_i w_i
+// - (F v_j + A_j w_j) + offset, and an impulse change dP moves v_i by inv_mass_i F^T dP and
+// w_i by B_i dP (opposite for j), with B = I^-1 A^T. W = sum over bodies of inv_mass 1 + A B.
+struct ContactRow {
+  Mat3 frame;             // F: rows n, t1, t2
+  Mat3 angular_i, angular_j;              // A = -F [r]x, r = lever arm from the centre
+  Mat3 spin_i, spin_j;                    // B
+  Mat3 delassus, delassus_inverse;
+  Vec3 offset;            // environment velocity and the Signorini shift (see doc)
+  Vec3 impulse;           // local frame
+  double inv_mass_i, inv_mass_j;
+  double mu;
+  double gap_start;       // gap + (1 - theta) dt u_n^- : predicted gap with u_n^+ = 0
+  double normal_shift;    // u_min: Signorini holds for u_n - u_min
+  int i, j;               // body indices, j may be kEnvironment
+  bool inert;             // both bodies immobile: nothing to solve
+  ContactRegime regime;
+};
+}    // namespace detail
+
+class ContactProblem {
+ public:
+  std::vector<SolverBody> bodies;
+  std::vector<Contact> contacts;
+
+  // Validates input, turns velocities into free velocities, builds the per-contact
+  // frames, lever-arm Jacobians and Delassus blocks, and applies the warm-start impulses
+  // (projected onto the Coulomb cone). Call once per time step. Reuses its buffers, so
+  // steady-state steps do not allocate.
+  void prepare(const SolverOptions &options);
+
+  // One nonlinear Gauss-Seidel pass over all contacts of this problem.
+  void sweep();
+
+  // Residual contributions of this problem's contacts at the current velocities.
+  ResidualTerms residual_terms() const;
+
+  // Writes the world impulse (on body i) and the regime of each contact into contacts.
+  void finish();
+
+  int sweeps_done() const { return sweeps_done_; }
+
+  // Velocity change of body b caused by this problem's contacts since prepare() (before
+  // the warm start) or since the last mark_synchronised(): what a ghost sends its owner.
+  Vec3 velocity_correction(int b) const { return bodies[b].velocity - synced_velocity_[b]; }
+  Vec3 angular_velocity_correction(int b) const
+  {
+    return bodies[b].angular_velocity - synced_angular_velocity_[b];
+  }
+  // Call once the velocities of all bodies (owned and ghost) agree across ranks.
+  void mark_synchronised();
+
+ private:
+  using Row = detail::ContactRow;
+
+  void build_row(const Contact &contact, std::size_t index, Row &row) const;
+  void relax(Row &row);
+  Vec3 local_velocity(const Row &row) const;
+  void apply_impulse_change(const Row &row, const Vec3 &dP);
+
+  std::vector<Row> rows_;
+  std::vector<int> order_;
+  std::vector<Vec3> synced_velocity_, synced_angular_velocity_;
+  SolverOptions options_;
+  std::mt19937_64 random_;
+  int sweeps_done_ = 0;
+  long local_failures_ = 0;
+};
+
+// Single-rank driver: prepare, sweep until the residual is below the tolerance (or
+// max_sweeps), finish.
+SolveReport solve(ContactProblem &problem, const SolverOptions &options);
+
+}    // namespace nscd

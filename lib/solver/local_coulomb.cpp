@@ -1,0 +1,194 @@
+#include "solver/local_coulomb.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <limits>
+
+namespace nscd {
+namespace {
+
+using Complex = std::complex<double>;
+
+// g(phi) = a0 + a1 cos(phi) + b1 sin(phi) + a2 cos(2 phi) + b2 sin(2 phi)
+struct TrigPolynomial2 {
+  double a0 = 0, a1 = 0, b1 = 0, a2 = 0, b2 = 0;
+
+  double value(double phi) const
+  {
+    return a0 + a1 * std::cos(phi) + b1 * std::sin(phi) + a2 * std::cos(2 * phi) +
+        b2 * std::sin(2 * phi);
+  }
+  double derivative(double phi) const
+  {
+    return -a1 * std::sin(phi) + b1 * std::cos(phi) - 2 * a2 * std::sin(2 * phi) +
+        2 * b2 * std::cos(2 * phi);
+  }
+};
+
+// Sliding along s = (c, s) means P = P_n d with d = (1, -mu c, -mu s). The normal row of
+// u = W P + a with u_n = 0 gives P_n = -a_n / D, D = (W d)_n. The tangential velocity
+// u_t = P_n (W d)_t + a_t must be parallel to s: s_perp . u_t = 0 with s_perp = (-s, c).
+// Multiplied by D this is  -a_n s_perp.(W d)_t + D s_perp.a_t = 0, whose expansion in
+// c, s is quadratic; rewritten with double angles it gives these Fourier coefficients.
+TrigPolynomial2 slip_direction_condition(const Mat3 &W, const Vec3 &a, double mu)
+{
+  TrigPolynomial2 g;
+  g.a0 = 0.5 * mu * (W(0, 2) * a[1] - W(0, 1) * a[2]);
+  g.a1 = W(0, 0) * a[2] - a[0] * W(2, 0);
+  g.b1 = a[0] * W(1, 0) - W(0, 0) * a[1];
+  g.a2 = mu * (a[0] * W(1, 2) - 0.5 * (W(0, 1) * a[2] + W(0, 2) * a[1]));
+  g.b2 = 0.5 * mu * (a[0] * (W(2, 2) - W(1, 1)) + W(0, 1) * a[1] - W(0, 2) * a[2]);
+  return g;
+}
+
+// Real roots of g on [0, 2 pi): with z = exp(i phi), z^2 g(phi) is a polynomial of degree
+// 4 in z whose roots on the unit circle are the wanted angles. Its coefficients are
+// conjugate-symmetric, so the degree drops to 2 exactly when a2 = b2 = 0 (the common case
+// of a contact whose lever arms are parallel to the normal, e.g. spheres).
+int candidate_slip_angles(const TrigPolynomial2 &g, std::array<double, 4> &angles)
+{
+  const Complex i(0.0, 1.0);
+  const Complex c4 = 0.5 * (g.a2 - i * g.b2);
+  const Complex c3 = 0.5 * (g.a1 - i * g.b1);
+  const Complex c2 = g.a0;
+  const Complex c1 = std::conj(c3);
+  const double scale = std::max({std::abs(c4), std::abs(c3), std::abs(c2)});
+  if (scale == 0.0) return 0;
+
+  std::array<Complex, 4> roots;
+  int n_roots = 0;
+  constexpr double negligible = 1e-13;
+  if (std::abs(c4) > negligible * scale) {
+    Eigen::Matrix4cd companion = Eigen::Matrix4cd::Zero();
+    companion(1, 0) = companion(2, 1) = companion(3, 2) = 1.0;
+    const Complex c0 = std::conj(c4);
+    companion(0, 3) = -c0 / c4;
+    companion(1, 3) = -c1 / c4;
+    companion(2, 3) = -c2 / c4;
+    companion(3, 3) = -c3 / c4;
+    const Eigen::ComplexEigenSolver<Eigen::Matrix4cd> solver(companion, false);
+    for (int k = 0; k < 4; ++k) roots[n_roots++] = solver.eigenvalues()[k];
+  } else if (std::abs(c3) > negligible * scale) {
+    // c3 z^2 + c2 z + c1 = 0
+    const Complex root_disc = std::sqrt(c2 * c2 - 4.0 * c3 * c1);
+    roots[n_roots++] = (-c2 + root_disc) / (2.0 * c3);
+    roots[n_roots++] = (-c2 - root_disc) / (2.0 * c3);
+  }
+
+  int n_angles = 0;
+  for (int k = 0; k < n_roots; ++k) {
+    // A loose test: a double root splits off the circle by ~sqrt(eps); Newton and the
+    // admissibility test below decide.
+    if (std::abs(std::abs(roots[k]) - 1.0) < 1e-3) angles[n_angles++] = std::arg(roots[k]);
+  }
+  return n_angles;
+}
+
+double polish_root(const TrigPolynomial2 &g, double phi)
+{
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    const double slope = g.derivative(phi);
+    if (slope == 0.0) break;
+    const double step = g.value(phi) / slope;
+    phi -= step;
+    if (std::abs(step) < 1e-15) break;
+  }
+  return phi;
+}
+
+struct SlipCandidate {
+  Vec3 impulse;
+  bool admissible = false;
+};
+
+// Checks the sliding conditions along angle phi: D > 0 (so P_n > 0), u_t parallel to s
+// and pointing along s (slip velocity sigma >= 0, up to round-off).
+SlipCandidate evaluate_slip(const Mat3 &W, const Vec3 &a, double mu, double phi)
+{
+  const double c = std::cos(phi), s = std::sin(phi);
+  const Vec3 direction(1.0, -mu * c, -mu * s);
+  const Vec3 W_direction = W * direction;
+  SlipCandidate candidate;
+  if (!(W_direction[0] > 0.0)) return candidate;
+  const double normal_impulse = -a[0] / W_direction[0];
+  if (!(normal_impulse > 0.0)) return candidate;
+  const double ut1 = normal_impulse * W_direction[1] + a[1];
+  const double ut2 = normal_impulse * W_direction[2] + a[2];
+  const double velocity_scale = a.norm();
+  const double tolerance = 1e-9 * velocity_scale;
+  const double slip_speed = c * ut1 + s * ut2;
+  const double off_direction = -s * ut1 + c * ut2;
+  candidate.impulse = normal_impulse * direction;
+  candidate.admissible = slip_speed >= -tolerance && std::abs(off_direction) <= tolerance;
+  return candidate;
+}
+
+LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free, double mu)
+{
+  const TrigPolynomial2 g = slip_direction_condition(W, u_free, mu);
+  std::array<double, 4> angles;
+  const int n_angles = candidate_slip_angles(g, angles);
+  LocalSolution best;
+  best.regime = ContactRegime::slip;
+  double best_normal = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n_angles; ++k) {
+    const SlipCandidate candidate = evaluate_slip(W, u_free, mu, polish_root(g, angles[k]));
+    if (candidate.admissible && candidate.impulse[0] < best_normal) {
+      best_normal = candidate.impulse[0];
+      best.impulse = candidate.impulse;
+    }
+  }
+  if (std::isinf(best_normal)) {
+    best.impulse = project_on_coulomb_cone(-(W_inverse * u_free), mu);
+    best.exact = false;
+  }
+  return best;
+}
+
+}    // namespace
+
+LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free,
+                                  double mu)
+{
+  LocalSolution solution;
+  if (u_free[0] >= 0.0) return solution;    // separating: open, P = 0
+
+  if (mu == 0.0) {
+    // Frictionless: the tangential velocity is free, only the normal row matters.
+    solution.impulse = Vec3(-u_free[0] / W(0, 0), 0.0, 0.0);
+    solution.regime = ContactRegime::slip;
+    return solution;
+  }
+
+  const Vec3 stick = -(W_inverse * u_free);
+  if (stick[0] > 0.0 && std::hypot(stick[1], stick[2]) <= mu * stick[0]) {
+    solution.impulse = stick;
+    solution.regime = ContactRegime::stick;
+    return solution;
+  }
+  return solve_slip(W, W_inverse, u_free, mu);
+}
+
+Vec3 project_on_coulomb_cone(const Vec3 &x, double mu)
+{
+  const double tangential = std::hypot(x[1], x[2]);
+  if (tangential <= mu * x[0]) return x;
+  if (mu * tangential <= -x[0]) return Vec3::Zero();
+  const double normal = (x[0] + mu * tangential) / (1.0 + mu * mu);
+  const double ratio = mu * normal / tangential;
+  return Vec3(normal, ratio * x[1], ratio * x[2]);
+}
+
+double coulomb_residual(const Mat3 &W, const Vec3 &u_free, double mu, const Vec3 &P, double s)
+{
+  const Vec3 u = W * P + u_free;
+  const Vec3 u_hat(u[0] + mu * std::hypot(u[1], u[2]), u[1], u[2]);
+  const Vec3 Q = s * P;
+  return (Q - project_on_coulomb_cone(Q - u_hat, mu)).norm();
+}
+
+}    // namespace nscd

@@ -1,0 +1,44 @@
+// Exact solution of the single-contact Signorini-Coulomb problem with a full 3x3 Delassus
+// block (the inner step of the nonlinear Gauss-Seidel).
+//
+// Local frame (n, t1, t2); P = (P_n, P_t) is the impulse on body i, u = W P + u_free the
+// (shifted) relative velocity of i with respect to j. Unknown P must satisfy
+//   Signorini:  P_n >= 0, u_n >= 0, P_n u_n = 0
+//   Coulomb:    |P_t| <= mu P_n; u_t = 0 (stick) or P_t = -mu P_n u_t / |u_t| (slip).
+#pragma once
+
+#include "math/types.h"
+
+namespace nscd {
+
+enum class ContactRegime : unsigned char { open, stick, slip };
+
+struct LocalSolution {
+  Vec3 impulse = Vec3::Zero();
+  ContactRegime regime = ContactRegime::open;
+  // False only if no exact slip solution was found (never seen for SPD W; the impulse is
+  // then the projection of the stick impulse onto the cone and the failure is counted).
+  bool exact = true;
+};
+
+// W: symmetric positive definite Delassus block, W_inverse: its inverse, mu >= 0.
+// Order of the cases: open if u_free_n >= 0 (no impulse is needed), else stick if the stick
+// impulse -W^-1 u_free lies in the cone, else slip. The slip case is solved exactly: along
+// the slip direction s = (cos phi, sin phi), P = P_n (1, -mu s) and u_n = 0 give P_n in
+// closed form; u_t parallel to s is then a trigonometric polynomial of degree 2 in phi
+// whose (at most 4) roots are found at once from a degree-4 companion matrix and polished by
+// Newton to machine precision. When several roots are admissible (possible only when
+// mu |W_nt| is comparable to W_nn) the one with the smallest normal impulse is taken.
+LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free,
+                                  double mu);
+
+// Projection onto the Coulomb cone K_mu = {x : |x_t| <= mu x_n}.
+Vec3 project_on_coulomb_cone(const Vec3 &x, double mu);
+
+// De Saxce's natural-map residual of the local law, in velocity units:
+//   Q = s P,  u_hat = (u_n + mu |u_t|, u_t),  r = Q - proj_K(Q - u_hat),  returns |r|
+// with u = W P + u_free and s > 0 any impulse-to-velocity scale (the solver uses W_nn).
+// Zero exactly when P solves the law; the global convergence test sums its squares.
+double coulomb_residual(const Mat3 &W, const Vec3 &u_free, double mu, const Vec3 &P, double s);
+
+}    // namespace nscd

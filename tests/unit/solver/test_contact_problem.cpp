@@ -1,0 +1,490 @@
+// The Gauss-Seidel contact solver on hand-built scenes with closed-form answers.
+#include "solver/contact_problem.h"
+#include "solver_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace nscd;
+using namespace nscd::test;
+
+namespace {
+
+constexpr double kGravity = 9.81;
+constexpr double kPi = 3.14159265358979323846;
+
+SolverOptions tight_options(double dt = 1e-3)
+{
+  SolverOptions options;
+  options.dt = dt;
+  options.tolerance = 1e-10;
+  options.max_sweeps = 20000;
+  return options;
+}
+
+struct Sphere {
+  double mass = 2.0, radius = 0.5;
+  Pose pose;
+  Vec3 velocity = Vec3::Zero(), angular_velocity = Vec3::Zero();
+  double moment() const { return 0.4 * mass * radius * radius; }
+};
+
+SolverBody solver_body(const Sphere &sphere, const Vec3 &gravity, double dt)
+{
+  SolverBody body;
+  body.position = sphere.pose.position;
+  body.velocity = sphere.velocity;
+  body.angular_velocity = sphere.angular_velocity;
+  body.inv_mass = 1.0 / sphere.mass;
+  body.inv_inertia = world_inverse_inertia(Vec3::Constant(sphere.moment()), sphere.pose.orientation);
+  body.external_impulse = dt * sphere.mass * gravity;
+  return body;
+}
+
+// One step of a sphere on the floor z = 0 under `gravity`.
+SolveReport step_sphere_on_floor(Sphere &sphere, const Vec3 &gravity, double mu,
+                                 const SolverOptions &options)
+{
+  ContactProblem problem;
+  problem.bodies.push_back(solver_body(sphere, gravity, options.dt));
+  Contact contact;
+  contact.body_i = 0;
+  contact.point = Vec3(sphere.pose.position.x(), sphere.pose.position.y(), 0.0);
+  contact.normal = Vec3::UnitZ();
+  contact.gap = sphere.pose.position.z() - sphere.radius;
+  contact.friction = mu;
+  problem.contacts.push_back(contact);
+  SolveReport report = solve(problem, options);
+  advance_pose(sphere.pose, sphere.velocity, sphere.angular_velocity, problem.bodies[0].velocity,
+               problem.bodies[0].angular_velocity, options.dt, options.theta);
+  sphere.velocity = problem.bodies[0].velocity;
+  sphere.angular_velocity = problem.bodies[0].angular_velocity;
+  return report;
+}
+
+}    // namespace
+
+TEST(ContactProblem, SphereRestsOnAPlaneWithoutDriftOrSpin)
+{
+  Sphere sphere;
+  sphere.pose.position = Vec3(0.0, 0.0, sphere.radius);
+  const SolverOptions options = tight_options();
+  const Vec3 gravity(0.0, 0.0, -kGravity);
+  for (int step = 0; step < 2000; ++step) {
+    ContactProblem problem;
+    problem.bodies.push_back(solver_body(sphere, gravity, options.dt));
+    Contact contact;
+    contact.point = Vec3(sphere.pose.position.x(), sphere.pose.position.y(), 0.0);
+    contact.gap = sphere.pose.position.z() - sphere.radius;
+    contact.friction = 0.5;
+    problem.contacts.push_back(contact);
+    const SolveReport report = solve(problem, options);
+    ASSERT_TRUE(report.converged);
+    EXPECT_LE(report.sweeps, 1);    // one contact: the local solve is exact
+    EXPECT_NEAR(problem.contacts[0].impulse.z(), sphere.mass * kGravity * options.dt,
+                1e-13 * sphere.mass * kGravity * options.dt);
+    advance_pose(sphere.pose, sphere.velocity, sphere.angular_velocity,
+                 problem.bodies[0].velocity, problem.bodies[0].angular_velocity, options.dt,
+                 options.theta);
+    sphere.velocity = problem.bodies[0].velocity;
+    sphere.angular_velocity = problem.bodies[0].angular_velocity;
+  }
+  EXPECT_NEAR(sphere.pose.position.z(), sphere.radius, 1e-14);
+  EXPECT_LT(sphere.velocity.norm(), 1e-15);
+  EXPECT_EQ(sphere.angular_velocity.norm(), 0.0);
+}
+
+TEST(ContactProblem, BoxOnFourCornersCarriesItsWeight)
+{
+  BoxColumn column;
+  column.floor_friction = 0.6;
+  column.stack({2.5}, Vec3(0.5, 0.3, 0.2));
+  const SolverOptions options = tight_options();
+  ContactProblem problem;
+  for (int step = 0; step < 1000; ++step) {
+    const SolveReport report = column.step(problem, options);
+    ASSERT_TRUE(report.converged) << "step " << step << " residual " << report.residual;
+    const Vec3 reaction = impulse_on(problem, 0);
+    EXPECT_NEAR(reaction.z(), 2.5 * kGravity * options.dt, 1e-9 * 2.5 * kGravity * options.dt);
+    // Tangential impulses cancel up to the solver tolerance (the split between the four
+    // corners is not unique, their sum is).
+    EXPECT_LT(reaction.head<2>().norm(), 10 * options.tolerance * reaction.z());
+  }
+  EXPECT_NEAR(column.boxes[0].pose.position.z(), 0.2, 1e-12);
+  // Velocity errors are ~ tolerance x g dt (= 1e-12 m/s), over a 0.2 m lever.
+  EXPECT_LT(column.boxes[0].angular_velocity.norm(), 1e-10);
+  EXPECT_LT(column.boxes[0].pose.orientation.angularDistance(Quat::Identity()), 1e-12);
+}
+
+// A block on an incline of angle alpha is a block on a level floor with tilted gravity.
+struct InclineRun {
+  Vec3 velocity;
+  Vec3 displacement;
+  double max_spin = 0.0;
+};
+
+InclineRun run_block_on_incline(double alpha, double mu, int steps, double dt)
+{
+  BoxColumn column;
+  column.floor_friction = mu;
+  column.gravity = kGravity * Vec3(std::sin(alpha), 0.0, -std::cos(alpha));
+  column.stack({1.5}, Vec3(0.4, 0.3, 0.25));
+  const Vec3 start = column.boxes[0].pose.position;
+  const SolverOptions options = tight_options(dt);
+  ContactProblem problem;
+  InclineRun run;
+  for (int step = 0; step < steps; ++step) {
+    const SolveReport report = column.step(problem, options);
+    EXPECT_TRUE(report.converged) << "step " << step;
+    EXPECT_EQ(report.terms.local_failures, 0);
+    run.max_spin = std::max(run.max_spin, column.boxes[0].angular_velocity.norm());
+  }
+  run.velocity = column.boxes[0].velocity;
+  run.displacement = column.boxes[0].pose.position - start;
+  return run;
+}
+
+TEST(ContactProblem, BlockOnInclineStaysAtRestBelowTheFrictionAngle)
+{
+  const double mu = 0.5, alpha = 25.0 * kPi / 180.0;    // tan(alpha) = 0.466 < mu
+  const InclineRun run = run_block_on_incline(alpha, mu, 500, 1e-3);
+  EXPECT_LT(run.velocity.norm(), 1e-12);
+  EXPECT_LT(run.displacement.norm(), 1e-12);
+  EXPECT_LT(run.max_spin, 1e-11);
+}
+
+TEST(ContactProblem, BlockOnInclineSlidesWithCoulombAcceleration)
+{
+  const double mu = 0.5, alpha = 35.0 * kPi / 180.0, dt = 1e-3;    // tan(alpha) = 0.70
+  const int steps = 300;
+  const InclineRun run = run_block_on_incline(alpha, mu, steps, dt);
+  const double expected = kGravity * (std::sin(alpha) - mu * std::cos(alpha));
+  const double measured = run.velocity.x() / (steps * dt);
+  EXPECT_NEAR(measured, expected, 1e-9 * expected);
+  EXPECT_LT(std::abs(run.velocity.y()) + std::abs(run.velocity.z()), 1e-12);
+  EXPECT_LT(run.max_spin, 1e-9);
+  // theta = 0.5 integrates the constant acceleration exactly: x = a t^2 / 2.
+  EXPECT_NEAR(run.displacement.x(), 0.5 * expected * std::pow(steps * dt, 2), 1e-9);
+}
+
+TEST(ContactProblem, SphereRollsDownAnInclineWithoutSlipping)
+{
+  // Rolling: a = (5/7) g sin(alpha) when mu >= (2/7) tan(alpha). Exercises the lever arms
+  // (the Delassus block couples the tangential and rotational parts).
+  const double alpha = 30.0 * kPi / 180.0, mu = 0.3, dt = 1e-3;    // (2/7) tan = 0.165
+  const Vec3 gravity = kGravity * Vec3(std::sin(alpha), 0.0, -std::cos(alpha));
+  Sphere sphere;
+  sphere.pose.position = Vec3(0.0, 0.0, sphere.radius);
+  const SolverOptions options = tight_options(dt);
+  const int steps = 400;
+  for (int step = 0; step < steps; ++step)
+    ASSERT_TRUE(step_sphere_on_floor(sphere, gravity, mu, options).converged);
+  const double expected = 5.0 / 7.0 * kGravity * std::sin(alpha);
+  EXPECT_NEAR(sphere.velocity.x() / (steps * dt), expected, 1e-10 * expected);
+  EXPECT_NEAR(sphere.angular_velocity.y() * sphere.radius, sphere.velocity.x(), 1e-12);
+  EXPECT_NEAR(sphere.pose.position.z(), sphere.radius, 1e-13);
+}
+
+TEST(ContactProblem, SphereOnSteepInclineSlidesAndSpinsUpByFriction)
+{
+  // mu < (2/7) tan(alpha): slipping. a = g (sin - mu cos), angular acc = (5/2) mu g cos / R.
+  const double alpha = 40.0 * kPi / 180.0, mu = 0.1, dt = 1e-3;
+  const Vec3 gravity = kGravity * Vec3(std::sin(alpha), 0.0, -std::cos(alpha));
+  Sphere sphere;
+  sphere.pose.position = Vec3(0.0, 0.0, sphere.radius);
+  const SolverOptions options = tight_options(dt);
+  const int steps = 200;
+  for (int step = 0; step < steps; ++step)
+    ASSERT_TRUE(step_sphere_on_floor(sphere, gravity, mu, options).converged);
+  const double t = steps * dt;
+  const double a = kGravity * (std::sin(alpha) - mu * std::cos(alpha));
+  const double spin_rate = 2.5 * mu * kGravity * std::cos(alpha) / sphere.radius;
+  EXPECT_NEAR(sphere.velocity.x(), a * t, 1e-12 * a * t);
+  EXPECT_NEAR(sphere.angular_velocity.y(), spin_rate * t, 1e-12 * spin_rate * t);
+}
+
+TEST(ContactProblem, StackOfThreeBoxesCarriesTheWeightAbove)
+{
+  BoxColumn column;
+  column.floor_friction = 0.4;
+  column.box_friction = 0.4;
+  const std::vector<double> masses = {3.0, 2.0, 1.0};    // bottom to top
+  column.stack(masses, Vec3(0.5, 0.5, 0.25));
+  const SolverOptions options = tight_options();
+  ContactProblem problem;
+  for (int step = 0; step < 100; ++step) {
+    const SolveReport report = column.step(problem, options);
+    ASSERT_TRUE(report.converged) << "step " << step;
+    double weight_above = 0.0;
+    for (int level = 2; level >= 0; --level) {
+      weight_above += masses[level] * kGravity * options.dt;
+      const Vec3 reaction = impulse_on(problem, level);
+      EXPECT_NEAR(reaction.z(), weight_above, 1e-9 * weight_above) << "level " << level;
+      // The residual is relative to the whole problem's velocity scale (set by the bottom).
+      EXPECT_LT(reaction.head<2>().norm(), 10 * options.tolerance * 6.0 * kGravity * options.dt);
+    }
+    EXPECT_EQ(report.terms.contacts, 12);
+    EXPECT_EQ(report.terms.active, 12);
+    EXPECT_LT(report.terms.max_interpenetration, 1e-13);
+  }
+  for (int level = 0; level < 3; ++level)
+    EXPECT_NEAR(column.boxes[level].pose.position.z(), 0.25 + 0.5 * level, 1e-12);
+}
+
+TEST(ContactProblem, HeavyBodyOnLightBodyConverges)
+{
+  BoxColumn column;
+  column.floor_friction = 0.5;
+  column.box_friction = 0.5;
+  column.stack({1.0, 1000.0}, Vec3(0.5, 0.5, 0.5));
+  // The residual is a velocity error relative to W_nn P, and W_nn of both contacts is set
+  // by the light body: an impulse on the heavy body is then known to about
+  // (mass ratio) x tolerance, hence the 1e-5 below for a tolerance of 1e-9.
+  SolverOptions options = tight_options();
+  options.tolerance = 1e-9;
+  options.max_sweeps = 100000;
+  ContactProblem problem;
+  int first_sweeps = 0;
+  for (int step = 0; step < 20; ++step) {
+    const SolveReport report = column.step(problem, options);
+    ASSERT_TRUE(report.converged) << "step " << step << " residual " << report.residual;
+    if (step == 0) first_sweeps = report.sweeps;
+    const double top = 1000.0 * kGravity * options.dt;
+    EXPECT_NEAR(impulse_on(problem, 1).z(), top, 1e-5 * top);
+    EXPECT_NEAR(impulse_on(problem, 0).z(), top + kGravity * options.dt, 1e-5 * top);
+  }
+  std::cout << "[ info ] mass ratio 1000, tolerance 1e-9: cold start " << first_sweeps
+            << " sweeps\n";
+  EXPECT_NEAR(column.boxes[0].pose.position.z(), 0.5, 1e-10);
+  EXPECT_NEAR(column.boxes[1].pose.position.z(), 1.5, 1e-10);
+}
+
+namespace {
+
+// Two spheres on the x axis: 0 at the origin moving +x, 1 to its right moving -x.
+ContactProblem two_sphere_collision(double gap, double restitution, double v0, double v1)
+{
+  ContactProblem problem;
+  for (int k = 0; k < 2; ++k) {
+    Sphere sphere;
+    sphere.mass = k == 0 ? 1.0 : 3.0;
+    sphere.pose.position = Vec3(k * (2 * sphere.radius + gap), 0.0, 0.0);
+    sphere.velocity = Vec3(k == 0 ? v0 : v1, 0.0, 0.0);
+    problem.bodies.push_back(solver_body(sphere, Vec3::Zero(), 1.0));
+  }
+  Contact contact;
+  contact.body_i = 1;
+  contact.body_j = 0;
+  contact.normal = Vec3::UnitX();
+  contact.point = Vec3(0.5 + 0.5 * gap, 0.0, 0.0);
+  contact.gap = gap;
+  contact.friction = 0.3;
+  contact.restitution = restitution;
+  problem.contacts.push_back(contact);
+  return problem;
+}
+
+double momentum_x(const ContactProblem &problem)
+{
+  return problem.bodies[0].velocity.x() * 1.0 + problem.bodies[1].velocity.x() * 3.0;
+}
+
+}    // namespace
+
+TEST(ContactProblem, HeadOnInelasticCollisionConservesMomentum)
+{
+  ContactProblem problem = two_sphere_collision(0.0, 0.0, 2.0, -1.0);
+  const double before = momentum_x(problem);
+  const SolveReport report = solve(problem, tight_options());
+  ASSERT_TRUE(report.converged);
+  EXPECT_NEAR(momentum_x(problem), before, 1e-14);
+  EXPECT_NEAR(problem.bodies[1].velocity.x() - problem.bodies[0].velocity.x(), 0.0, 1e-14);
+  EXPECT_NEAR(problem.bodies[0].velocity.x(), -0.25, 1e-14);    // (1*2 - 3*1) / 4
+  EXPECT_LT(problem.bodies[0].angular_velocity.norm() + problem.bodies[1].angular_velocity.norm(),
+            1e-15);
+}
+
+TEST(ContactProblem, RestitutionReversesTheRelativeNormalVelocity)
+{
+  const double e = 0.6;
+  ContactProblem problem = two_sphere_collision(0.0, e, 2.0, -1.0);
+  const double before = momentum_x(problem);
+  ASSERT_TRUE(solve(problem, tight_options()).converged);
+  EXPECT_NEAR(momentum_x(problem), before, 1e-14);
+  EXPECT_NEAR(problem.bodies[1].velocity.x() - problem.bodies[0].velocity.x(), e * 3.0, 1e-14);
+}
+
+TEST(ContactProblem, ContactClosingWithinTheStepIsCaughtWithoutPenetration)
+{
+  // theta = 1: the approach is slowed to exactly close the gap at the end of the step.
+  SolverOptions options = tight_options(0.01);
+  options.theta = 1.0;
+  const double gap = 0.4 * 3.0 * options.dt;    // closes at 40 % of the step
+  ContactProblem problem = two_sphere_collision(gap, 0.0, 2.0, -1.0);
+  const SolveReport report = solve(problem, options);
+  ASSERT_TRUE(report.converged);
+  const double u_after = problem.bodies[1].velocity.x() - problem.bodies[0].velocity.x();
+  EXPECT_NEAR(u_after, -gap / options.dt, 1e-13);
+  EXPECT_LT(report.terms.max_interpenetration, 1e-16);
+  EXPECT_GT(report.terms.max_interpenetration, -1e-16);    // touching: end gap exactly 0
+
+  // Far apart: the contact stays open.
+  ContactProblem far = two_sphere_collision(2.0 * 3.0 * options.dt, 0.0, 2.0, -1.0);
+  const SolveReport far_report = solve(far, options);
+  EXPECT_EQ(far_report.terms.active, 0);
+  EXPECT_EQ(far.bodies[0].velocity.x(), 2.0);
+  EXPECT_EQ(far.contacts[0].impulse, Vec3::Zero());
+}
+
+TEST(ContactProblem, WarmStartReducesSweepsOnARestingStack)
+{
+  BoxColumn column;
+  column.floor_friction = 0.5;
+  column.box_friction = 0.5;
+  column.stack({1, 1, 1, 1, 1, 1, 1, 1}, Vec3(0.5, 0.4, 0.3));
+  SolverOptions options = tight_options();
+  options.tolerance = 1e-8;
+  ContactProblem problem;
+  int cold_first = 0, warm_last = 0;
+  for (int step = 0; step < 20; ++step) {
+    const SolveReport report = column.step(problem, options);
+    ASSERT_TRUE(report.converged);
+    if (step == 0) cold_first = report.sweeps;
+    warm_last = report.sweeps;
+  }
+  // The same state solved cold.
+  column.warm_start = false;
+  const SolveReport cold = column.step(problem, options);
+  ASSERT_TRUE(cold.converged);
+  std::cout << "[ info ] 8-box stack, tolerance 1e-8: cold " << cold.sweeps << " (first step "
+            << cold_first << "), warm " << warm_last << " sweeps\n";
+  EXPECT_LT(3 * warm_last, cold.sweeps);
+}
+
+TEST(ContactProblem, SweepOrdersAgreeOnTheReactions)
+{
+  for (const SweepOrder order :
+       {SweepOrder::as_given, SweepOrder::shuffled, SweepOrder::forward_backward}) {
+    BoxColumn column;
+    column.floor_friction = 0.3;
+    column.box_friction = 0.3;
+    column.stack({1.0, 2.0, 4.0}, Vec3(0.5, 0.5, 0.5));
+    SolverOptions options = tight_options();
+    options.order = order;
+    options.relaxation = order == SweepOrder::shuffled ? 0.9 : 1.0;
+    ContactProblem problem;
+    const SolveReport report = column.step(problem, options);
+    ASSERT_TRUE(report.converged) << static_cast<int>(order);
+    EXPECT_NEAR(impulse_on(problem, 0).z(), 7.0 * kGravity * options.dt, 1e-9);
+    EXPECT_NEAR(impulse_on(problem, 1).z(), 6.0 * kGravity * options.dt, 1e-9);
+    EXPECT_NEAR(impulse_on(problem, 2).z(), 4.0 * kGravity * options.dt, 1e-9);
+  }
+}
+
+TEST(ContactProblem, TwoRankSplitWithGhostExchangeMatchesOneRank)
+{
+  // Emulates domain decomposition: rank 0 owns boxes 0-1 and the contacts under them,
+  // rank 1 owns boxes 2-3 and theirs; each rank holds every box (the others as ghosts).
+  BoxColumn column;
+  column.floor_friction = 0.5;
+  column.box_friction = 0.5;
+  column.stack({1.0, 2.0, 3.0, 4.0}, Vec3(0.5, 0.5, 0.5));
+  SolverOptions options = tight_options();
+  options.tolerance = 1e-10;
+
+  ContactProblem whole;
+  column.build(whole, options.dt);
+  ContactProblem ranks[2];
+  for (ContactProblem &rank : ranks) rank.bodies = whole.bodies;
+  for (const Contact &contact : whole.contacts)
+    ranks[contact.body_i < 2 ? 0 : 1].contacts.push_back(contact);
+  const auto owner = [](int body) { return body < 2 ? 0 : 1; };
+
+  const auto exchange = [&]() {
+    for (int b = 0; b < 4; ++b) {
+      const int own = owner(b), other = 1 - own;
+      const Vec3 v = ranks[own].bodies[b].velocity + ranks[other].velocity_correction(b);
+      const Vec3 w =
+          ranks[own].bodies[b].angular_velocity + ranks[other].angular_velocity_correction(b);
+      for (ContactProblem &rank : ranks) {
+        rank.bodies[b].velocity = v;
+        rank.bodies[b].angular_velocity = w;
+      }
+    }
+    for (ContactProblem &rank : ranks) rank.mark_synchronised();
+  };
+
+  for (ContactProblem &rank : ranks) rank.prepare(options);
+  exchange();
+  int sweeps = 0;
+  double residual = 1.0;
+  while (residual > options.tolerance && sweeps < options.max_sweeps) {
+    for (ContactProblem &rank : ranks) rank.sweep();
+    exchange();
+    ResidualTerms terms = ranks[0].residual_terms();
+    terms.merge(ranks[1].residual_terms());
+    residual = terms.residual();
+    ++sweeps;
+  }
+  ASSERT_LE(residual, options.tolerance) << "after " << sweeps << " sweeps";
+  const SolveReport single = solve(whole, options);
+  std::cout << "[ info ] 4-box stack, tolerance 1e-10: 1 rank " << single.sweeps
+            << " sweeps, 2 ranks " << sweeps << " sweeps\n";
+  for (ContactProblem &rank : ranks) rank.finish();
+  double weight_above = 0.0;
+  for (int level = 3; level >= 0; --level) {
+    weight_above += (level + 1.0) * kGravity * options.dt;
+    EXPECT_NEAR(impulse_on(ranks[owner(level)], level).z(), weight_above, 1e-9 * weight_above);
+    // Both runs stop at a residual of 1e-10 of the velocity scale (~g dt).
+    EXPECT_LT((ranks[0].bodies[level].velocity - whole.bodies[level].velocity).norm(),
+              10 * options.tolerance * kGravity * options.dt * 4);
+  }
+}
+
+TEST(ContactProblem, BadInputIsRejectedWithAClearMessage)
+{
+  BoxColumn column;
+  column.stack({1.0}, Vec3(0.5, 0.5, 0.5));
+  ContactProblem problem;
+  column.build(problem, 1e-3);
+  SolverOptions options = tight_options();
+
+  problem.contacts[2].normal = Vec3(0.0, 0.0, 2.0);
+  try {
+    problem.prepare(options);
+    FAIL() << "a normal of length 2 was accepted";
+  } catch (const SolverError &error) {
+    EXPECT_NE(std::string(error.what()).find("contact 2: normal has length 2"), std::string::npos)
+        << error.what();
+  }
+  column.build(problem, 1e-3);
+  problem.contacts[0].body_j = 7;
+  EXPECT_THROW(problem.prepare(options), SolverError);
+  column.build(problem, 1e-3);
+  problem.contacts[0].friction = -0.1;
+  EXPECT_THROW(problem.prepare(options), SolverError);
+  column.build(problem, 1e-3);
+  problem.bodies[0].inv_mass = -1.0;
+  EXPECT_THROW(problem.prepare(options), SolverError);
+  column.build(problem, 1e-3);
+  options.dt = 0.0;
+  EXPECT_THROW(problem.prepare(options), SolverError);
+  options = tight_options();
+  options.theta = 0.0;
+  EXPECT_THROW(problem.prepare(options), SolverError);
+}
+
+TEST(ContactProblem, ContactBetweenTwoImmobileBodiesIsInert)
+{
+  ContactProblem problem;
+  problem.bodies.resize(1);    // inv_mass = 0: a fixed grain
+  Contact contact;
+  contact.gap = -0.01;
+  problem.contacts.push_back(contact);
+  const SolveReport report = solve(problem, tight_options());
+  EXPECT_TRUE(report.converged);
+  EXPECT_EQ(report.terms.active, 0);
+  EXPECT_EQ(problem.contacts[0].impulse, Vec3::Zero());
+}
