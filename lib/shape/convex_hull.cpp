@@ -37,10 +37,12 @@ class QhullRun {
   QhullRun(const QhullRun &) = delete;
   QhullRun &operator=(const QhullRun &) = delete;
 
-  // Default 3-d options: premerging of coplanar facets ('C-0'), so a cube gives 6 faces.
-  int run(std::vector<double> &coordinates)
+  // Premerge ('C-n'): neighbouring facets whose centrums lie within merge_distance of
+  // each other's planes become one facet, so a cube (even a slightly noisy one) has 6 faces.
+  int run(std::vector<double> &coordinates, double merge_distance)
   {
-    char options[] = "qhull";
+    char options[64];
+    std::snprintf(options, sizeof options, "qhull C-%.3g", merge_distance);
     const int count = static_cast<int>(coordinates.size() / 3);
     return qh_new_qhull(&qh_, 3, count, coordinates.data(), False, options, nullptr,
                         error_stream_);
@@ -92,7 +94,8 @@ void start_at_smallest(std::vector<int> &face)
 
 // A vertex strictly inside a hull edge (180 degrees in its faces) carries no geometry:
 // qhull may keep such points after merging. They are dropped from every face.
-void drop_straight_vertices(std::vector<HullPolygon> &faces, const std::vector<Vec3> &points)
+void drop_straight_vertices(std::vector<HullPolygon> &faces, const std::vector<Vec3> &points,
+                            double merge_distance)
 {
   std::map<int, int> corner_count, straight_count;
   for (const auto &face : faces) {
@@ -101,8 +104,10 @@ void drop_straight_vertices(std::vector<HullPolygon> &faces, const std::vector<V
       const Vec3 &prev = points[face.vertices[(i + n - 1) % n]];
       const Vec3 &here = points[face.vertices[i]];
       const Vec3 &next = points[face.vertices[(i + 1) % n]];
-      const Vec3 a = here - prev, b = next - here;
-      const bool straight = a.cross(b).norm() <= 1e-12 * a.norm() * b.norm() && a.dot(b) > 0;
+      const Vec3 chord = next - prev;
+      const double off_line = (here - prev).cross(chord).norm() / chord.norm();
+      const bool between = (here - prev).dot(chord) > 0 && (next - here).dot(chord) > 0;
+      const bool straight = between && off_line <= std::max(merge_distance, 1e-12 * chord.norm());
       corner_count[face.vertices[i]]++;
       if (straight) straight_count[face.vertices[i]]++;
     }
@@ -143,14 +148,14 @@ HullTopology topology_from_faces(std::vector<HullPolygon> faces)
 
 }    // namespace
 
-HullTopology convex_hull_3d(const std::vector<Vec3> &points)
+HullTopology convex_hull_3d(const std::vector<Vec3> &points, double merge_distance)
 {
   std::vector<double> coordinates;
   coordinates.reserve(3 * points.size());
   for (const auto &p : points) coordinates.insert(coordinates.end(), {p.x(), p.y(), p.z()});
 
   QhullRun run;
-  if (run.run(coordinates) != 0) {
+  if (run.run(coordinates, merge_distance) != 0) {
     throw ShapeError("convex hull failed (qhull: " + run.diagnostics() +
                      "); check that the points are finite and span 3-D space");
   }
@@ -167,7 +172,7 @@ HullTopology convex_hull_3d(const std::vector<Vec3> &points)
     order_counter_clockwise(face.vertices, points, outward);
     faces.push_back(std::move(face));
   }
-  drop_straight_vertices(faces, points);
+  drop_straight_vertices(faces, points, merge_distance);
   return topology_from_faces(std::move(faces));
 }
 

@@ -20,9 +20,10 @@ struct HullTopology {
 };
 
 // Hull of points spanning 3-D space (the caller has checked that they are not flat).
-// Coplanar facets are merged into one polygon. Each face starts at its smallest vertex
+// Facets coplanar to within merge_distance (a length; 0 = round-off only) are merged into
+// one polygon. Each face starts at its smallest vertex
 // index and faces are sorted, so the result only depends on the input order, not on
 // qhull's internals. Throws ShapeError if qhull fails.
-HullTopology convex_hull_3d(const std::vector<Vec3> &points);
+HullTopology convex_hull_3d(const std::vector<Vec3> &points, double merge_distance);
 
 }    // namespace nscd

@@ -13,8 +13,8 @@ namespace nscd {
 namespace {
 
 // Points closer than this (relative to the shape's size: the larger of the point cloud's
-// extent and the rounding radius) are one point, and a cloud thinner than this is flat or
-// collinear.
+// extent and the rounding radius) are one point, a cloud thinner than this is flat or
+// collinear, and hull facets this close to coplanar are merged into one face.
 constexpr double kRelativeTolerance = 1e-10;
 // Principal moments closer than this (relative to the largest) are treated as equal: the
 // axes in that plane are then taken from the input axes (see choose_principal_axes).
@@ -137,9 +137,9 @@ void set_edge_faces(Spheropolyhedron &shape)
 }
 
 // Polyhedron core from the hull of the (distinct, 3-D spanning) points.
-void build_polyhedron_core(Spheropolyhedron &shape, const std::vector<Vec3> &points)
+void build_polyhedron_core(Spheropolyhedron &shape, const std::vector<Vec3> &points, double tolerance)
 {
-  const HullTopology hull = convex_hull_3d(points);
+  const HullTopology hull = convex_hull_3d(points, tolerance);
   std::vector<int> compact(points.size(), -1);
   for (int v : hull.vertices) {
     compact[v] = static_cast<int>(shape.vertices.size());
@@ -273,7 +273,7 @@ Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double r
                        " coplanar points form a flat point set (no volume); add a point off "
                        "their plane, or for a thin plate give vertices on both of its faces");
     case Dimension::solid:
-      build_polyhedron_core(shape, distinct);
+      build_polyhedron_core(shape, distinct, tolerance);
       break;
   }
   move_to_body_frame(shape, reference);

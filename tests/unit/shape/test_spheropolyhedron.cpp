@@ -131,6 +131,23 @@ TEST(Spheropolyhedron, InteriorFaceEdgeAndDuplicatePointsAreDropped)
   EXPECT_NEAR(s.volume, 8.0, 1e-13);
 }
 
+TEST(Spheropolyhedron, NearlyCoplanarFacetsAreMerged)
+{
+  // Corners and edge midpoints moved by 1e-12 (below the 1e-10 relative tolerance).
+  auto points = box_corners(1, 1, 1);
+  for (int axis = 0; axis < 3; ++axis) points.push_back(0.5 * (Vec3::Ones() - Vec3::Unit(axis)));
+  std::mt19937_64 rng(13);
+  for (auto &p : points) p += 1e-12 * random_in_ball(rng);
+  const auto s = make_spheropolyhedron(points, 0.1);
+  EXPECT_EQ(s.faces.size(), 6u);
+  EXPECT_EQ(s.edges.size(), 12u);
+  EXPECT_EQ(s.vertices.size(), 8u);
+  // Noise well above the tolerance keeps the true (triangulated) hull.
+  auto rough = box_corners(1, 1, 1);
+  for (auto &p : rough) p += 1e-4 * random_in_ball(rng);
+  EXPECT_GT(make_spheropolyhedron(rough, 0.0).faces.size(), 6u);
+}
+
 TEST(Spheropolyhedron, SphereFromOnePoint)
 {
   const double r = 0.7;
