@@ -1,0 +1,143 @@
+// Narrow-phase contact geometry: where two bodies touch, or nearly touch.
+//
+// Bodies are spheropolyhedra (a convex core dilated by a sphere of radius r), plane walls,
+// the inside of a cylinder wall and wire segments (spherocylinders). All functions are
+// exact on the cores (no sampling, no iteration tolerance beyond round-off) and allocate
+// no heap memory once their ContactWorkspace has grown to the largest shape seen.
+//
+// Conventions (doc/contact_geometry.md has the details and the reasons):
+//  * contact(i, j): the normal points from j to i (it pushes i away from j);
+//  * gap = distance between the dilated surfaces, negative when they overlap;
+//  * point = midpoint between the two dilated surfaces along the normal;
+//  * a contact is reported when gap <= activation (activation >= 0), so a solver sees
+//    contacts that may close during the coming step;
+//  * key = 64-bit id of the pair of features (vertex / edge / face on each side) that made
+//    the point; the high 32 bits describe i's feature, the low 32 bits j's feature. The
+//    key depends only on which features touch, so it persists from step to step.
+#pragma once
+
+#include "math/types.h"
+#include "shape/spheropolyhedron.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+namespace nscd {
+
+// Any invalid argument of a contact query (bad wall, negative activation distance, ...).
+class ContactError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct ContactPoint {
+  Vec3 point;             // world position, midway between the two dilated surfaces
+  Vec3 normal;            // unit, from body j to body i
+  double gap;             // signed distance between dilated surfaces (< 0: overlap)
+  std::uint64_t key;      // persistent feature-pair id, see feature_key.h
+};
+
+// All points of one contact between two bodies; fixed capacity, no heap.
+struct ContactSet {
+  // A flat patch is reduced to at most this many points spanning it (a box face on a box
+  // face gives its 4 corners): enough for any force distribution over the patch, few
+  // enough to keep the contact problem well conditioned.
+  static constexpr int kMaxPoints = 4;
+  std::array<ContactPoint, kMaxPoints> points{};
+  int count = 0;
+
+  bool empty() const { return count == 0; }
+  const ContactPoint *begin() const { return points.data(); }
+  const ContactPoint *end() const { return points.data() + count; }
+  const ContactPoint &operator[](int k) const { return points[k]; }
+};
+
+// Contact of a wire segment i with a body j (or another segment j): one point.
+struct SegmentContact {
+  Vec3 point;             // world, midway between the two dilated surfaces
+  Vec3 normal;            // unit, from j to i
+  double gap;             // signed distance between dilated surfaces (< 0: overlap)
+  double s_i = 0.0;       // position of the contact along segment i: 0 at p0, 1 at p1
+  double s_j = 0.0;       // same along segment j (0 when j is a grain)
+  std::uint64_t key = 0;  // feature pair, as in ContactPoint
+};
+
+// A spherocylinder: segment p0-p1 dilated by radius (p0 == p1 is a sphere).
+struct Segment {
+  Vec3 p0;
+  Vec3 p1;
+  double radius = 0.0;
+};
+
+// Half-space wall: the domain is on the side `normal` points to.
+struct PlaneWall {
+  Vec3 point;             // any point of the wall plane
+  Vec3 normal;            // unit normal pointing into the domain
+};
+
+// Cylindrical wall; the grains are inside it.
+struct CylinderWall {
+  Vec3 axis_point;        // any point on the axis
+  Vec3 axis_direction;    // unit vector along the axis
+  double radius = 0.0;    // inner radius of the wall
+};
+
+// Scratch memory of the contact queries. Keep one per thread and pass it to every call:
+// its buffers grow to the largest shape seen and are then reused without allocation.
+class ContactWorkspace {
+ public:
+  struct ClipVertex {
+    Vec3 position;
+    std::uint32_t incident_feature;   // feature of the incident body this point lies on
+    std::uint32_t reference_feature;  // feature of the reference body it projects onto
+    // What the polygon edge leaving this vertex lies on: an edge of the incident face
+    // (incident_edge) when reference_side < 0, else the side plane of reference edge
+    // number reference_side.
+    std::uint32_t incident_edge;
+    int reference_side;
+  };
+  struct Candidate {
+    Vec3 position;                    // midway between the dilated surfaces
+    Vec3 core_point_i;                // the point's foot on core i
+    double gap;
+    std::uint64_t key;
+  };
+
+  std::vector<Vec3> vertices_i, vertices_j;     // core vertices in the query frame
+  std::vector<Vec3> normals_i, normals_j;       // face normals in the query frame
+  std::vector<double> offsets_i, offsets_j;     // face plane offsets in the query frame
+  std::vector<ClipVertex> polygon, clipped;     // ping-pong buffers of face clipping
+  std::vector<Candidate> candidates;            // manifold points before reduction
+};
+
+// Two grains i and j. Returns the contact points with gap <= activation (maybe none).
+ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
+                          const Spheropolyhedron &shape_j, const Pose &pose_j,
+                          double activation, ContactWorkspace &workspace);
+
+// Grain i against a plane wall j.
+ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
+                               const PlaneWall &wall, double activation,
+                               ContactWorkspace &workspace);
+
+// Grain i inside a cylindrical wall j.
+ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pose,
+                                  const CylinderWall &wall, double activation,
+                                  ContactWorkspace &workspace);
+
+// Wire segment i against grain j: the single point of closest approach (for a segment
+// lying flat on a face, the middle of the touching stretch).
+std::optional<SegmentContact> contact_segment_grain(const Segment &segment,
+                                                    const Spheropolyhedron &shape,
+                                                    const Pose &pose, double activation,
+                                                    ContactWorkspace &workspace);
+
+// Wire segment i against wire segment j (parallel overlapping segments: middle of the
+// overlap; zero-length segments are spheres).
+std::optional<SegmentContact> contact_segments(const Segment &segment_i,
+                                               const Segment &segment_j, double activation);
+
+}    // namespace nscd

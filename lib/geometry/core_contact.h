@@ -1,0 +1,73 @@
+// The shared machinery of the contact queries (internal to lib/geometry): a convex core in
+// a common frame, the separating-axis search and the contact-manifold builder.
+#pragma once
+
+#include "geometry/contact.h"
+
+namespace nscd {
+namespace geometry_detail {
+
+// Relative tolerances, all multiplied by the length scale of the pair (the larger
+// bounding radius) or dimensionless. doc/contact_geometry.md explains each choice.
+struct Tolerance {
+  // A point within this distance of a clipping plane is on it (round-off of the frame).
+  static constexpr double kClip = 1e-9;
+  // Two contact points closer than this (times the smaller size) are one support.
+  static constexpr double kMerge = 1e-6;
+  // Cores closer than this use the separating-axis search: the GJK direction from two
+  // nearly coincident closest points is ill-conditioned.
+  static constexpr double kNearTouch = 1e-6;
+  // A face is the contact plane when 1 - cos(angle to the axis) is below this.
+  static constexpr double kFaceAlign = 1e-8;
+  // An edge lies in the contact plane when |cos(angle to the axis)| is below this.
+  static constexpr double kEdgeAlign = 1e-7;
+  // An edge axis must beat the best face axis by this much (times the length scale)
+  // to be chosen: faces give stable multi-point patches.
+  static constexpr double kEdgeAxisBias = 1e-9;
+};
+
+// A convex core placed in the query frame. Polytopes (4+ vertices) carry their topology
+// through `shape`; points and segments (1 or 2 vertices) have no faces.
+struct Core {
+  const Vec3 *vertices = nullptr;    // count vertices, query frame
+  int count = 0;
+  const Spheropolyhedron *shape = nullptr;    // faces / edges (polytopes only)
+  const Vec3 *normals = nullptr;     // face normals, query frame (polytopes only)
+  const double *offsets = nullptr;   // face offsets, query frame (polytopes only)
+  Vec3 centroid = Vec3::Zero();      // mean of the vertices: inside the core
+  double radius = 0.0;
+
+  bool is_polytope() const { return shape != nullptr && count >= 4; }
+  int face_count() const { return is_polytope() ? static_cast<int>(shape->faces.size()) : 0; }
+};
+
+// Places a grain's core in the frame whose origin is `origin` (world), using the buffers.
+Core place_core(const Spheropolyhedron &shape, const Pose &pose, const Vec3 &origin,
+                std::vector<Vec3> &vertices, std::vector<Vec3> &normals,
+                std::vector<double> &offsets);
+
+// The axis of largest separation among face normals and edge-edge cross products.
+struct SeparatingAxis {
+  double separation;    // < 0: the cores overlap by this much along axis
+  Vec3 axis;            // unit, from core a towards core b
+};
+// Needs at least one polytope core.
+SeparatingAxis find_separating_axis(const Core &a, const Core &b, double length_scale);
+
+// The contact manifold of cores a and b. The result is in workspace.candidates; the
+// return value is the common unit normal, from b to a.
+struct ManifoldInput {
+  double activation;       // keep points with gap <= activation
+  double length_scale;     // larger bounding radius of the pair
+  double merge_distance;   // points closer than this are merged
+};
+Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &input,
+                    ContactWorkspace &workspace);
+
+// Reduces workspace.candidates to at most ContactSet::kMaxPoints points covering the
+// patch (deepest point first) and writes them, in the frame shifted back by origin.
+void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
+                       const Vec3 &origin, double merge_distance, ContactSet &out);
+
+}    // namespace geometry_detail
+}    // namespace nscd

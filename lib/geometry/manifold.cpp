@@ -1,0 +1,360 @@
+// Contact manifold of two convex cores: the exact closest features (GJK when the cores are
+// apart, the separating-axis search when they touch or overlap), then the points of the
+// touching features: face against face or edge is clipped (reference face + incident
+// feature), edge against edge or vertex gives the closest points.
+#include "geometry/core_contact.h"
+
+#include "geometry/feature_key.h"
+#include "geometry/gjk.h"
+#include "geometry/segment_closest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nscd {
+namespace geometry_detail {
+namespace {
+
+using ClipVertex = ContactWorkspace::ClipVertex;
+using Candidate = ContactWorkspace::Candidate;
+
+int support_vertex(const Core &core, const Vec3 &direction)
+{
+  int best = 0;
+  double best_dot = core.vertices[0].dot(direction);
+  for (int k = 1; k < core.count; ++k) {
+    const double d = core.vertices[k].dot(direction);
+    if (d > best_dot) {
+      best_dot = d;
+      best = k;
+    }
+  }
+  return best;
+}
+
+bool face_has_vertex(const Face &face, int vertex)
+{
+  return std::find(face.vertices.begin(), face.vertices.end(), vertex) != face.vertices.end();
+}
+
+// The face through `vertex` whose normal is closest to `direction`; its cosine in
+// alignment (-inf when the core has no faces). Only faces through the support vertex
+// can carry the deepest point, so no other face is considered.
+int face_towards(const Core &core, int vertex, const Vec3 &direction, double &alignment)
+{
+  alignment = -std::numeric_limits<double>::infinity();
+  int best = -1;
+  for (int f = 0; f < core.face_count(); ++f) {
+    const double c = core.normals[f].dot(direction);
+    if (c > alignment && face_has_vertex(core.shape->faces[f], vertex)) {
+      alignment = c;
+      best = f;
+    }
+  }
+  return best;
+}
+
+// The vertex `vertex`, or the edge through it lying in the contact plane (perpendicular
+// to axis), whichever the core presents to the other body.
+struct FeatureSegment {
+  Vec3 p0, p1;
+  int v0, v1;
+  bool is_edge;
+};
+
+FeatureSegment feature_facing(const Core &core, int vertex, const Vec3 &axis)
+{
+  FeatureSegment out{core.vertices[vertex], core.vertices[vertex], vertex, vertex, false};
+  double best = Tolerance::kEdgeAlign;
+  auto consider = [&](int v0, int v1) {
+    const Vec3 e = core.vertices[v1] - core.vertices[v0];
+    const double len = e.norm();
+    if (len == 0.0) return;
+    const double c = std::abs(e.dot(axis)) / len;
+    if (c <= best) {
+      best = c;
+      out = {core.vertices[v0], core.vertices[v1], v0, v1, true};
+    }
+  };
+  if (core.is_polytope()) {
+    for (const auto &e : core.shape->edges)
+      if (e[0] == vertex || e[1] == vertex) consider(e[0], e[1]);
+  } else if (core.count == 2) {
+    consider(0, 1);
+  }
+  return out;
+}
+
+std::uint32_t feature_at(const FeatureSegment &f, double s)
+{
+  if (!f.is_edge || s <= 0.0) return vertex_feature(f.v0);
+  if (s >= 1.0) return vertex_feature(f.v1);
+  return edge_feature(f.v0, f.v1);
+}
+
+// Adds the point pair (pa on a, pb on b), gap measured along the unit axis a -> b.
+void add_point_pair(const Core &a, const Core &b, const Vec3 &pa, const Vec3 &pb,
+                    const Vec3 &axis, std::uint64_t key, double activation,
+                    ContactWorkspace &ws)
+{
+  const double gap = (pb - pa).dot(axis) - a.radius - b.radius;
+  if (!(gap <= activation)) return;
+  const Vec3 position = 0.5 * (pa + pb + (a.radius - b.radius) * axis);
+  ws.candidates.push_back({position, pa, gap, key});
+}
+
+// Edge / vertex against edge / vertex: the closest points of the two features; parallel
+// edges give the two ends of their overlap.
+void add_feature_pair(const Core &a, const FeatureSegment &fa, const Core &b,
+                      const FeatureSegment &fb, const Vec3 &axis, const ManifoldInput &in,
+                      ContactWorkspace &ws)
+{
+  const double length_tol = Tolerance::kClip * in.length_scale;
+  const SegmentClosest c = closest_points_on_segments(fa.p0, fa.p1, fb.p0, fb.p1, length_tol);
+  const Vec3 ea = fa.p1 - fa.p0, eb = fb.p1 - fb.p0;
+  auto add_at = [&](double s) {
+    const Vec3 pa = fa.p0 + s * ea;
+    const double t = fb.is_edge ? closest_parameter_on_segment(fb.p0, fb.p1, pa) : 0.0;
+    add_point_pair(a, b, pa, fb.p0 + t * eb, axis, make_key(feature_at(fa, s), feature_at(fb, t)),
+                   in.activation, ws);
+  };
+  const bool line_contact = fa.is_edge && fb.is_edge && c.parallel &&
+                            (c.s_hi - c.s_lo) * ea.norm() > in.merge_distance;
+  if (line_contact) {
+    add_at(c.s_lo);
+    add_at(c.s_hi);
+  } else {
+    add_point_pair(a, b, c.point_a, c.point_b, axis,
+                   make_key(feature_at(fa, c.s), feature_at(fb, c.t)), in.activation, ws);
+  }
+}
+
+// ---- face clipping ------------------------------------------------------------------
+
+struct ReferenceFace {
+  const Core *core;
+  int face;
+  Vec3 normal;    // outward from the reference core, towards the incident one
+  double offset;
+};
+
+// The incident core's feature facing the reference face, as a polygon in ws.polygon:
+// the face through its support vertex most opposed to the reference normal, its segment,
+// or its single vertex. Returns the feature id of the polygon's interior.
+std::uint32_t load_incident_polygon(const Core &inc, int support, const Vec3 &ref_normal,
+                                    std::uint32_t ref_feature, ContactWorkspace &ws)
+{
+  ws.polygon.clear();
+  if (inc.is_polytope()) {
+    double alignment;
+    const int g = face_towards(inc, support, -ref_normal, alignment);
+    const auto &loop = inc.shape->faces[g].vertices;
+    const int m = static_cast<int>(loop.size());
+    for (int k = 0; k < m; ++k) {
+      const int v = loop[k], next = loop[(k + 1) % m];
+      ws.polygon.push_back({inc.vertices[v], vertex_feature(v), ref_feature, edge_feature(v, next), -1});
+    }
+    return face_feature(g);
+  }
+  for (int k = 0; k < inc.count; ++k)
+    ws.polygon.push_back({inc.vertices[k], vertex_feature(k), ref_feature, edge_feature(0, inc.count - 1), -1});
+  return edge_feature(0, inc.count - 1);
+}
+
+// Feature of the reference body where side planes `earlier` and `side` meet: their
+// common vertex when the two reference edges are adjacent.
+std::uint32_t side_corner(const std::vector<int> &loop, int earlier, int side)
+{
+  const int m = static_cast<int>(loop.size());
+  if (earlier == (side + m - 1) % m) return vertex_feature(loop[side]);
+  if (earlier == (side + 1) % m) return vertex_feature(loop[(side + 1) % m]);
+  return edge_feature(loop[side], loop[(side + 1) % m]);
+}
+
+// Where polygon edge P->Q crosses side plane `side` (signed distances dp, dq).
+ClipVertex crossing(const ClipVertex &p, const ClipVertex &q, double dp, double dq,
+                    const std::vector<int> &loop, int side, std::uint32_t incident_interior)
+{
+  const int m = static_cast<int>(loop.size());
+  const double t = std::min(1.0, std::max(0.0, dp / (dp - dq)));
+  ClipVertex out;
+  out.position = p.position + t * (q.position - p.position);
+  if (p.reference_side < 0) {    // P->Q is an incident edge: edge against edge
+    out.incident_feature = p.incident_edge;
+    out.reference_feature = edge_feature(loop[side], loop[(side + 1) % m]);
+  } else {                       // P->Q runs along an earlier side plane: a reference corner
+    out.incident_feature = incident_interior;
+    out.reference_feature = side_corner(loop, p.reference_side, side);
+  }
+  return out;
+}
+
+// One Sutherland-Hodgman step: keeps the part of ws.polygon inside side plane `side`.
+void clip_by_side(const ReferenceFace &ref, int side, double tol,
+                  std::uint32_t incident_interior, ContactWorkspace &ws)
+{
+  const auto &loop = ref.core->shape->faces[ref.face].vertices;
+  const int m = static_cast<int>(loop.size());
+  const Vec3 &r0 = ref.core->vertices[loop[side]];
+  const Vec3 &r1 = ref.core->vertices[loop[(side + 1) % m]];
+  const Vec3 outward = (r1 - r0).cross(ref.normal).normalized();    // CCW loop
+  ws.clipped.clear();
+  const int n = static_cast<int>(ws.polygon.size());
+  for (int k = 0; k < n; ++k) {
+    const ClipVertex &p = ws.polygon[k], &q = ws.polygon[(k + 1) % n];
+    const double dp = outward.dot(p.position - r0), dq = outward.dot(q.position - r0);
+    const bool p_in = dp <= tol, q_in = dq <= tol;
+    if (p_in && !q_in) {
+      ClipVertex exit = crossing(p, q, dp, dq, loop, side, incident_interior);
+      exit.reference_side = side;    // the polygon now runs along this side plane
+      exit.incident_edge = p.incident_edge;
+      ws.clipped.push_back(exit);
+    } else if (!p_in && q_in) {
+      ClipVertex entry = crossing(p, q, dp, dq, loop, side, incident_interior);
+      entry.reference_side = p.reference_side;
+      entry.incident_edge = p.incident_edge;
+      ws.clipped.push_back(entry);
+    }
+    if (q_in) ws.clipped.push_back(q);
+  }
+  ws.polygon.swap(ws.clipped);
+}
+
+// Face of `ref` against the incident core. Returns false when nothing of the incident
+// feature lies over the face (then the caller falls back to the closest features).
+bool add_face_contact(const ReferenceFace &ref, const Core &inc, int inc_support,
+                      bool ref_is_a, const ManifoldInput &in, ContactWorkspace &ws)
+{
+  const std::uint32_t ref_face = face_feature(ref.face);
+  const std::uint32_t interior = load_incident_polygon(inc, inc_support, ref.normal, ref_face, ws);
+  const int sides = static_cast<int>(ref.core->shape->faces[ref.face].vertices.size());
+  const double tol = Tolerance::kClip * in.length_scale;
+  for (int side = 0; side < sides && !ws.polygon.empty(); ++side)
+    clip_by_side(ref, side, tol, interior, ws);
+  if (ws.polygon.empty()) return false;
+
+  const double r_ref = ref.core->radius, r_inc = inc.radius;
+  for (const ClipVertex &v : ws.polygon) {
+    const double height = ref.normal.dot(v.position) - ref.offset;    // core-to-core distance
+    const double gap = height - r_ref - r_inc;
+    if (!(gap <= in.activation)) continue;
+    const Vec3 position = v.position + 0.5 * (r_ref - r_inc - height) * ref.normal;
+    const Vec3 on_ref = v.position - height * ref.normal;
+    if (ref_is_a) {
+      ws.candidates.push_back({position, on_ref, gap, make_key(v.reference_feature, v.incident_feature)});
+    } else {
+      ws.candidates.push_back({position, v.position, gap, make_key(v.incident_feature, v.reference_feature)});
+    }
+  }
+  return true;
+}
+
+// ---- choice of the axis and of the features -------------------------------------------
+
+// Unit axis from core a to core b at the closest approach, or false when the cores are
+// farther apart than the activation distance allows.
+bool contact_axis(const Core &a, const Core &b, const ManifoldInput &in, Vec3 &axis)
+{
+  const GjkResult g = gjk_distance(a.vertices, a.count, b.vertices, b.count, in.length_scale);
+  if (!g.overlap && g.distance - a.radius - b.radius > in.activation) return false;
+  if (g.overlap || g.distance < Tolerance::kNearTouch * in.length_scale) {
+    // Touching or overlapping cores: the exact axis is a face normal or an edge-edge
+    // cross product, which the separating-axis search finds without cancellation.
+    const SeparatingAxis s = find_separating_axis(a, b, in.length_scale);
+    if (s.separation - a.radius - b.radius > in.activation) return false;
+    axis = s.axis;
+  } else {
+    axis = (g.point_b - g.point_a) / g.distance;
+  }
+  return true;
+}
+
+// Merges points closer than merge_distance: keeps the one touching more vertices (its
+// key is the stabler one), then the deeper one.
+int vertex_count(std::uint64_t key)
+{
+  return (feature_type(key_feature_i(key)) == FeatureType::Vertex) +
+         (feature_type(key_feature_j(key)) == FeatureType::Vertex);
+}
+
+void merge_close_points(double merge_distance, std::vector<Candidate> &points)
+{
+  const double d2 = merge_distance * merge_distance;
+  size_t kept = 0;
+  for (size_t k = 0; k < points.size(); ++k) {
+    bool merged = false;
+    for (size_t j = 0; j < kept && !merged; ++j) {
+      if ((points[j].position - points[k].position).squaredNorm() > d2) continue;
+      merged = true;
+      const int vj = vertex_count(points[j].key), vk = vertex_count(points[k].key);
+      if (vk > vj || (vk == vj && points[k].gap < points[j].gap)) points[j] = points[k];
+    }
+    if (!merged) points[kept++] = points[k];
+  }
+  points.resize(kept);
+}
+
+// Both cores are points or segments: closed form, two points for parallel segments.
+Vec3 segment_pair_manifold(const Core &a, const Core &b, const ManifoldInput &in,
+                           ContactWorkspace &ws)
+{
+  const FeatureSegment fa{a.vertices[0], a.vertices[a.count - 1], 0, a.count - 1, a.count == 2};
+  const FeatureSegment fb{b.vertices[0], b.vertices[b.count - 1], 0, b.count - 1, b.count == 2};
+  const SegmentClosest c = closest_points_on_segments(fa.p0, fa.p1, fb.p0, fb.p1,
+                                                      Tolerance::kClip * in.length_scale);
+  const Vec3 between = c.point_b - c.point_a;
+  const double distance = between.norm();
+  Vec3 axis;
+  if (distance > Tolerance::kClip * in.length_scale) {
+    axis = between / distance;
+  } else {
+    // Crossing segments: their common normal, pointing from a's centre towards b's.
+    const Vec3 ea = fa.p1 - fa.p0, eb = fb.p1 - fb.p0;
+    Vec3 n = ea.cross(eb);
+    if (n.squaredNorm() <= 1e-24 * ea.squaredNorm() * eb.squaredNorm() || n.squaredNorm() == 0.0)
+      n = any_perpendicular(ea.squaredNorm() > 0.0 ? ea : (eb.squaredNorm() > 0.0 ? eb : Vec3::UnitX()));
+    axis = n.normalized();
+    if (axis.dot(b.centroid - a.centroid) < 0.0) axis = -axis;
+  }
+  add_feature_pair(a, fa, b, fb, axis, in, ws);
+  return -axis;
+}
+
+}    // namespace
+
+Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, ContactWorkspace &ws)
+{
+  ws.candidates.clear();
+  if (a.count <= 2 && b.count <= 2) {
+    const Vec3 normal = segment_pair_manifold(a, b, in, ws);
+    merge_close_points(in.merge_distance, ws.candidates);
+    return normal;
+  }
+  Vec3 axis;
+  if (!contact_axis(a, b, in, axis)) return Vec3::UnitX();
+
+  const int va = support_vertex(a, axis), vb = support_vertex(b, -axis);
+  double align_a, align_b;
+  const int fa = face_towards(a, va, axis, align_a);
+  const int fb = face_towards(b, vb, -axis, align_b);
+  const double face_cos = 1.0 - Tolerance::kFaceAlign;
+  Vec3 normal = -axis;
+  bool done = false;
+  if (std::max(align_a, align_b) >= face_cos) {
+    const bool ref_is_a = align_a >= align_b;
+    const Core &ref_core = ref_is_a ? a : b;
+    const int face = ref_is_a ? fa : fb;
+    const ReferenceFace ref{&ref_core, face, ref_core.normals[face], ref_core.offsets[face]};
+    done = add_face_contact(ref, ref_is_a ? b : a, ref_is_a ? vb : va, ref_is_a, in, ws);
+    if (done) normal = ref_is_a ? Vec3(-ref.normal) : ref.normal;
+  }
+  if (!done) {
+    add_feature_pair(a, feature_facing(a, va, axis), b, feature_facing(b, vb, -axis), axis, in, ws);
+  }
+  merge_close_points(in.merge_distance, ws.candidates);
+  return normal;
+}
+
+}    // namespace geometry_detail
+}    // namespace nscd

@@ -1,0 +1,137 @@
+// Grain against a plane wall and against the inside of a cylindrical wall.
+//
+// Both distances are exact on the core's vertices: the height above a plane is linear and
+// the distance from an axis is convex, so over a convex core both reach their extreme at
+// a vertex. Every vertex closer than the activation distance is a contact point (a box
+// face on a plane gives its 4 corners); larger patches are reduced to 4 spanning points.
+#include "geometry/contact.h"
+
+#include "geometry/core_contact.h"
+#include "geometry/feature_key.h"
+#include "geometry/segment_closest.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace nscd {
+namespace {
+
+using namespace geometry_detail;
+
+void check_activation(double activation)
+{
+  if (!std::isfinite(activation) || activation < 0.0) {
+    std::ostringstream out;
+    out << "contact activation distance " << activation
+        << " is invalid; give a finite distance >= 0 (0 reports touching contacts only)";
+    throw ContactError(out.str());
+  }
+}
+
+// The unit vector along v, or an error naming the wall's bad direction.
+Vec3 unit_direction(const Vec3 &v, const char *what)
+{
+  const double n = v.norm();
+  if (!std::isfinite(n) || n == 0.0) {
+    std::ostringstream out;
+    out << what << " (" << v.transpose() << ") is not a usable direction; give a finite, non-zero vector";
+    throw ContactError(out.str());
+  }
+  return v / n;
+}
+
+void check_point(const Vec3 &p, const char *what)
+{
+  if (!p.allFinite()) {
+    std::ostringstream out;
+    out << what << " (" << p.transpose() << ") is not finite; give finite coordinates";
+    throw ContactError(out.str());
+  }
+}
+
+// Core vertices of the grain relative to its centre (the frame origin of the query).
+void place_vertices(const Spheropolyhedron &shape, const Pose &pose, std::vector<Vec3> &vertices)
+{
+  const Mat3 rotation = pose.orientation.toRotationMatrix();
+  vertices.resize(shape.vertices.size());
+  for (size_t k = 0; k < shape.vertices.size(); ++k) vertices[k] = rotation * shape.vertices[k];
+}
+
+}    // namespace
+
+ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
+                               const PlaneWall &wall, double activation, ContactWorkspace &ws)
+{
+  check_activation(activation);
+  check_point(wall.point, "plane wall point");
+  const Vec3 normal = unit_direction(wall.normal, "plane wall normal");
+  ContactSet out;
+  const double centre_height = normal.dot(pose.position - wall.point);
+  if (centre_height - shape.bounding_radius > activation) return out;
+
+  place_vertices(shape, pose, ws.vertices_i);
+  ws.candidates.clear();
+  for (size_t k = 0; k < ws.vertices_i.size(); ++k) {
+    const Vec3 &v = ws.vertices_i[k];
+    const double height = centre_height + normal.dot(v);    // core vertex above the wall
+    const double gap = height - shape.radius;
+    if (!(gap <= activation)) continue;
+    // Midway between the grain's surface (height - r) and the wall (height 0).
+    const Vec3 position = v - 0.5 * (height + shape.radius) * normal;
+    ws.candidates.push_back({position, v, gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
+  }
+  write_contact_set(ws, normal, pose.position, 0.0, out);
+  return out;
+}
+
+ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pose,
+                                  const CylinderWall &wall, double activation,
+                                  ContactWorkspace &ws)
+{
+  check_activation(activation);
+  check_point(wall.axis_point, "cylinder wall axis point");
+  const Vec3 axis = unit_direction(wall.axis_direction, "cylinder wall axis direction");
+  if (!std::isfinite(wall.radius) || wall.radius <= 0.0) {
+    std::ostringstream out;
+    out << "cylinder wall radius " << wall.radius << " is invalid; give a finite radius > 0";
+    throw ContactError(out.str());
+  }
+  ContactSet out;
+  const Vec3 centre_offset = pose.position - wall.axis_point;
+  const Vec3 centre_radial = centre_offset - axis.dot(centre_offset) * axis;
+  if (wall.radius - centre_radial.norm() - shape.bounding_radius > activation) return out;
+
+  place_vertices(shape, pose, ws.vertices_i);
+  ws.candidates.clear();
+  Vec3 deepest_outward = Vec3::Zero();
+  double deepest_gap = 0.0;
+  for (size_t k = 0; k < ws.vertices_i.size(); ++k) {
+    const Vec3 &v = ws.vertices_i[k];
+    const Vec3 radial = centre_radial + v - axis.dot(v) * axis;    // from the axis to the vertex
+    const double rho = radial.norm();
+    const double gap = wall.radius - rho - shape.radius;
+    if (!(gap <= activation)) continue;
+    // A vertex on the axis itself is equally far from the whole wall: any radial
+    // direction will do; take a fixed one so the answer is deterministic.
+    const Vec3 outward = rho > 0.0 ? Vec3(radial / rho) : any_perpendicular(axis);
+    // Midway between the grain's surface (rho + r) and the wall (R), along the radius.
+    const Vec3 position = v + 0.5 * (wall.radius - rho + shape.radius) * outward;
+    ws.candidates.push_back({position, v, gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
+    if (ws.candidates.size() == 1 || gap < deepest_gap) {
+      deepest_gap = gap;
+      deepest_outward = outward;
+    }
+  }
+  // Reduce on the plane tangent at the deepest point, then give each point its own
+  // normal (the wall is curved): from the wall towards the axis.
+  write_contact_set(ws, -deepest_outward, pose.position, 0.0, out);
+  for (int k = 0; k < out.count; ++k) {
+    const Vec3 offset = out.points[k].point - wall.axis_point;
+    const Vec3 radial = offset - axis.dot(offset) * axis;
+    const double rho = radial.norm();
+    out.points[k].normal = rho > 0.0 ? Vec3(-radial / rho) : Vec3(-any_perpendicular(axis));
+  }
+  return out;
+}
+
+}    // namespace nscd
