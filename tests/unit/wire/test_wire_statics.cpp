@@ -100,11 +100,10 @@ TEST(WireStatics, ChainPulledAtOneEndStretchesAsKeloPredicts)
 TEST(WireStatics, CantileverConvergesToBeamTheory)
 {
   // Measured tip deflection vs (a) the discrete beam's closed form (1e-4 relative: the
-  // load is small, delta/L ~ 3e-4, so geometric and axial effects are ~1e-7), (b) F L^3 /
-  // 3EI with the clamp
-  // half-way between the two fixed nodes, L = (N - 1/2) l: error N(N-1)/(N-1/2)^2 - 1 =
-  // -1/(4N^2+...) -> second order, (c) with L = N l, the full wire length: first order,
-  // error ~ -3/(2N).
+  // load is small, delta/L ~ 3e-4, so geometric and axial effects are ~1e-7);
+  // (b) F L^3 / 3EI with the clamp half-way between the two fixed nodes, L = (N - 1/2) l:
+  // error N(N-1)/(N-1/2)^2 - 1 ~ -1/(4N^2), second order; (c) F L^3 / 3EI with L = N l,
+  // the full wire length: error ~ -3/(2N), first order.
   std::printf("[cantilever]   N   delta/delta_discrete   err vs L=(N-1/2)l   err vs L=Nl\n");
   double previous_eff = 0, previous_full = 0;
   for (int N : {10, 20, 40}) {
