@@ -42,6 +42,7 @@ struct SoftContactLaw {
 };
 
 // Throws std::invalid_argument naming the bad value (negative stiffness, mu_d > mu_s, ...).
+// Call once when the law is set up; soft_contact_force does not re-check it per contact.
 void validate(const SoftContactLaw &law);
 
 // Per-contact memory, owned by the caller (e.g. LAMMPS' per-contact history, which packs
