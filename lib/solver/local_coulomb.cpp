@@ -17,16 +17,17 @@ using Complex = std::complex<double>;
 struct TrigPolynomial2 {
   double a0 = 0, a1 = 0, b1 = 0, a2 = 0, b2 = 0;
 
-  double value(double phi) const
+  // From c = cos(phi), s = sin(phi): one sine and cosine per evaluation.
+  double value(double c, double s) const
   {
-    return a0 + a1 * std::cos(phi) + b1 * std::sin(phi) + a2 * std::cos(2 * phi) +
-        b2 * std::sin(2 * phi);
+    return a0 + a1 * c + b1 * s + a2 * (c * c - s * s) + b2 * 2.0 * s * c;
   }
-  double derivative(double phi) const
+  double derivative(double c, double s) const
   {
-    return -a1 * std::sin(phi) + b1 * std::cos(phi) - 2 * a2 * std::sin(2 * phi) +
-        2 * b2 * std::cos(2 * phi);
+    return -a1 * s + b1 * c - 4.0 * a2 * s * c + 2.0 * b2 * (c * c - s * s);
   }
+  double value(double phi) const { return value(std::cos(phi), std::sin(phi)); }
+  double derivative(double phi) const { return derivative(std::cos(phi), std::sin(phi)); }
 };
 
 // Sliding along s = (c, s) means P = P_n d with d = (1, -mu c, -mu s). The normal row of
@@ -88,6 +89,52 @@ int candidate_slip_angles(const TrigPolynomial2 &g, std::array<double, 4> &angle
   return n_angles;
 }
 
+// Fast path: sign changes of g on 16 sample angles bracket its simple roots, each refined
+// by Newton safeguarded with bisection. Roots closer together than the sample spacing
+// (near-tangent cases) can be missed; the caller then falls back to the companion matrix.
+int bracketed_slip_angles(const TrigPolynomial2 &g, std::array<double, 4> &angles)
+{
+  constexpr int n_samples = 16;
+  constexpr double spacing = 2.0 * 3.14159265358979323846 / n_samples;
+  static const std::array<std::array<double, 2>, n_samples> directions = [] {
+    std::array<std::array<double, 2>, n_samples> table;
+    for (int k = 0; k < n_samples; ++k) table[k] = {std::cos(k * spacing), std::sin(k * spacing)};
+    return table;
+  }();
+  std::array<double, n_samples + 1> values;
+  for (int k = 0; k < n_samples; ++k) values[k] = g.value(directions[k][0], directions[k][1]);
+  values[n_samples] = values[0];
+
+  int n_angles = 0;
+  for (int k = 0; k < n_samples && n_angles < 4; ++k) {
+    if (values[k] == 0.0) {
+      angles[n_angles++] = k * spacing;
+      continue;
+    }
+    if ((values[k] > 0.0) == (values[k + 1] > 0.0) || values[k + 1] == 0.0) continue;
+    double low = k * spacing, high = low + spacing;
+    const bool rising = values[k] < 0.0;
+    // Start from the secant through the bracket ends (closer than the midpoint).
+    double phi = low + spacing * values[k] / (values[k] - values[k + 1]);
+    for (int iteration = 0; iteration < 60; ++iteration) {
+      const double c = std::cos(phi), s = std::sin(phi);
+      const double value = g.value(c, s);
+      if (value == 0.0) break;
+      if ((value < 0.0) == rising) low = phi; else high = phi;
+      const double slope = g.derivative(c, s);
+      const double newton_step = slope != 0.0 ? -value / slope : high - low;
+      if (std::abs(newton_step) <= 1e-15 * (1.0 + std::abs(phi))) {
+        phi += newton_step;    // converged: the step is below round-off of phi
+        break;
+      }
+      const double next = phi + newton_step;
+      phi = next > low && next < high ? next : 0.5 * (low + high);
+    }
+    angles[n_angles++] = phi;
+  }
+  return n_angles;
+}
+
 double polish_root(const TrigPolynomial2 &g, double phi)
 {
   for (int iteration = 0; iteration < 12; ++iteration) {
@@ -127,22 +174,34 @@ SlipCandidate evaluate_slip(const Mat3 &W, const Vec3 &a, double mu, double phi)
   return candidate;
 }
 
+// The admissible slip solution with the smallest normal impulse among the given angles;
+// returns false if none is admissible.
+bool best_slip(const Mat3 &W, const Vec3 &u_free, double mu, const std::array<double, 4> &angles,
+               int n_angles, Vec3 &impulse)
+{
+  double best_normal = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n_angles; ++k) {
+    const SlipCandidate candidate = evaluate_slip(W, u_free, mu, angles[k]);
+    if (candidate.admissible && candidate.impulse[0] < best_normal) {
+      best_normal = candidate.impulse[0];
+      impulse = candidate.impulse;
+    }
+  }
+  return !std::isinf(best_normal);
+}
+
 LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free, double mu)
 {
   const TrigPolynomial2 g = slip_direction_condition(W, u_free, mu);
-  std::array<double, 4> angles;
-  const int n_angles = candidate_slip_angles(g, angles);
   LocalSolution best;
   best.regime = ContactRegime::slip;
-  double best_normal = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < n_angles; ++k) {
-    const SlipCandidate candidate = evaluate_slip(W, u_free, mu, polish_root(g, angles[k]));
-    if (candidate.admissible && candidate.impulse[0] < best_normal) {
-      best_normal = candidate.impulse[0];
-      best.impulse = candidate.impulse;
-    }
-  }
-  if (std::isinf(best_normal)) {
+  std::array<double, 4> angles;
+  int n_angles = bracketed_slip_angles(g, angles);
+  if (best_slip(W, u_free, mu, angles, n_angles, best.impulse)) return best;
+
+  n_angles = candidate_slip_angles(g, angles);
+  for (int k = 0; k < n_angles; ++k) angles[k] = polish_root(g, angles[k]);
+  if (!best_slip(W, u_free, mu, angles, n_angles, best.impulse)) {
     best.impulse = project_on_coulomb_cone(-(W_inverse * u_free), mu);
     best.exact = false;
   }

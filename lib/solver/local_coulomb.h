@@ -26,9 +26,12 @@ struct LocalSolution {
 // impulse -W^-1 u_free lies in the cone, else slip. The slip case is solved exactly: along
 // the slip direction s = (cos phi, sin phi), P = P_n (1, -mu s) and u_n = 0 give P_n in
 // closed form; u_t parallel to s is then a trigonometric polynomial of degree 2 in phi
-// whose (at most 4) roots are found at once from a degree-4 companion matrix and polished by
-// Newton to machine precision. When several roots are admissible (possible only when
-// mu |W_nt| is comparable to W_nn) the one with the smallest normal impulse is taken.
+// (at most 4 roots). Fast path: its sign changes on 16 sample angles bracket the roots,
+// each refined by safeguarded Newton to machine precision. If that yields no admissible
+// root (two roots closer than the sampling, i.e. a near-tangent case), all roots are taken
+// at once from the eigenvalues of a degree-4 companion matrix and polished by Newton. When
+// several roots are admissible (possible only when mu |W_nt| is comparable to W_nn) the one
+// with the smallest normal impulse is taken.
 LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free,
                                   double mu);
 
