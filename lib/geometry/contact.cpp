@@ -30,6 +30,7 @@ Core place_core(const Spheropolyhedron &shape, const Pose &pose, const Vec3 &ori
   core.vertices = vertices.data();
   core.count = n;
   core.centroid = sum / n;
+  for (int k = 0; k < n; ++k) core.extent = std::max(core.extent, (vertices[k] - core.centroid).norm());
   core.radius = shape.radius;
   if (shape.is_polyhedron()) {
     const int nf = static_cast<int>(shape.faces.size());
@@ -162,6 +163,7 @@ Core place_segment(const Segment &segment, const Vec3 &origin, std::vector<Vec3>
   core.vertices = vertices.data();
   core.count = 2;
   core.centroid = 0.5 * (vertices[0] + vertices[1]);
+  core.extent = 0.5 * (vertices[1] - vertices[0]).norm();
   core.radius = segment.radius;
   return core;
 }

@@ -106,11 +106,19 @@ class ContactWorkspace {
     std::uint64_t key;
   };
 
+  // An edge on the Gauss sphere: the arc between the normals of its two faces (negated
+  // for body j), with their cross product, for the separating-axis pruning.
+  struct EdgeArc {
+    Vec3 n0, n1, n1_x_n0;
+  };
+
   std::vector<Vec3> vertices_i, vertices_j;     // core vertices in the query frame
   std::vector<Vec3> normals_i, normals_j;       // face normals in the query frame
   std::vector<double> offsets_i, offsets_j;     // face plane offsets in the query frame
   std::vector<ClipVertex> polygon, clipped;     // ping-pong buffers of face clipping
   std::vector<Candidate> candidates;            // manifold points before reduction
+  std::vector<EdgeArc> arcs_i, arcs_j;          // edge arcs of the two cores
+  std::vector<int> edges_near_i, edges_near_j;  // edges close enough to the other core
 };
 
 // Two grains i and j. Returns the contact points with gap <= activation (maybe none).

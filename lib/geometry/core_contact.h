@@ -35,6 +35,7 @@ struct Core {
   const Vec3 *normals = nullptr;     // face normals, query frame (polytopes only)
   const double *offsets = nullptr;   // face offsets, query frame (polytopes only)
   Vec3 centroid = Vec3::Zero();      // mean of the vertices: inside the core
+  double extent = 0.0;               // largest distance from centroid to a vertex
   double radius = 0.0;
 
   bool is_polytope() const { return shape != nullptr && count >= 4; }
@@ -52,7 +53,8 @@ struct SeparatingAxis {
   Vec3 axis;            // unit, from core a towards core b
 };
 // Needs at least one polytope core.
-SeparatingAxis find_separating_axis(const Core &a, const Core &b, double length_scale);
+SeparatingAxis find_separating_axis(const Core &a, const Core &b, double length_scale,
+                                    ContactWorkspace &workspace);
 
 // The contact manifold of cores a and b. The result is in workspace.candidates; the
 // return value is the common unit normal, from b to a.

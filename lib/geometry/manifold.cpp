@@ -254,14 +254,15 @@ bool add_face_contact(const ReferenceFace &ref, const Core &inc, int inc_support
 
 // Unit axis from core a to core b at the closest approach, or false when the cores are
 // farther apart than the activation distance allows.
-bool contact_axis(const Core &a, const Core &b, const ManifoldInput &in, Vec3 &axis)
+bool contact_axis(const Core &a, const Core &b, const ManifoldInput &in, ContactWorkspace &ws,
+                  Vec3 &axis)
 {
   const GjkResult g = gjk_distance(a.vertices, a.count, b.vertices, b.count, in.length_scale);
   if (!g.overlap && g.distance - a.radius - b.radius > in.activation) return false;
   if (g.overlap || g.distance < Tolerance::kNearTouch * in.length_scale) {
     // Touching or overlapping cores: the exact axis is a face normal or an edge-edge
     // cross product, which the separating-axis search finds without cancellation.
-    const SeparatingAxis s = find_separating_axis(a, b, in.length_scale);
+    const SeparatingAxis s = find_separating_axis(a, b, in.length_scale, ws);
     if (s.separation - a.radius - b.radius > in.activation) return false;
     axis = s.axis;
   } else {
@@ -332,7 +333,7 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, Conta
     return normal;
   }
   Vec3 axis;
-  if (!contact_axis(a, b, in, axis)) return Vec3::UnitX();
+  if (!contact_axis(a, b, in, ws, axis)) return Vec3::UnitX();
 
   const int va = support_vertex(a, axis), vb = support_vertex(b, -axis);
   double align_a, align_b;

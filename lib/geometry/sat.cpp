@@ -48,14 +48,27 @@ void test_face_axes(const Core &faces_of, const Core &other, double direction_si
   }
 }
 
-// Do the arcs (a, b) and (c, d) on the Gauss sphere cross? a, b: normals of the faces of
-// an edge of core a; c, d: negated normals of an edge of core b. Only then does the cross
-// product of the two edges span a face of the Minkowski difference (Gregorius, GDC 2013).
-bool arcs_cross(const Vec3 &a, const Vec3 &b, const Vec3 &c, const Vec3 &d)
+// The arcs of the edges of a core on the Gauss sphere; sign -1 negates the normals
+// (for core b, whose normals enter the Minkowski difference negated).
+void load_arcs(const Core &core, double sign, std::vector<ContactWorkspace::EdgeArc> &arcs)
 {
-  const Vec3 bxa = b.cross(a), dxc = d.cross(c);
-  const double cba = c.dot(bxa), dba = d.dot(bxa), adc = a.dot(dxc), bdc = b.dot(dxc);
-  return cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0;
+  const auto &edge_faces = core.shape->edge_faces;
+  arcs.resize(edge_faces.size());
+  for (size_t e = 0; e < edge_faces.size(); ++e) {
+    const Vec3 n0 = sign * core.normals[edge_faces[e][0]], n1 = sign * core.normals[edge_faces[e][1]];
+    arcs[e] = {n0, n1, n1.cross(n0)};
+  }
+}
+
+// Do the arcs of an edge of a and an edge of b cross? Only then does the cross product of
+// the two edges span a face of the Minkowski difference (Gregorius, GDC 2013). The cheap
+// half of the test comes first: most pairs fail it.
+bool arcs_cross(const ContactWorkspace::EdgeArc &a, const ContactWorkspace::EdgeArc &b)
+{
+  const double cba = b.n0.dot(a.n1_x_n0), dba = b.n1.dot(a.n1_x_n0);
+  if (!(cba * dba < 0.0)) return false;
+  const double adc = a.n0.dot(b.n1_x_n0), bdc = a.n1.dot(b.n1_x_n0);
+  return adc * bdc < 0.0 && cba * bdc > 0.0;
 }
 
 // Unit cross product of two edge directions, or false when they are parallel.
@@ -69,17 +82,37 @@ bool edge_axis(const Vec3 &ea, const Vec3 &eb, Vec3 &axis)
   return true;
 }
 
-void test_polytope_edge_pairs(const Core &a, const Core &b, double bias, SeparatingAxis &best)
+// Edges of `core` passing within `margin` of the other core's bounding sphere. The edges
+// of the best edge-edge axis pass within the penetration depth of the other core (they
+// touch once the cores are pushed apart along it), and that depth is at most the one of
+// the best face axis, so the other edges cannot win and are skipped.
+void edges_near(const Core &core, const Core &other, double margin, std::vector<int> &out)
 {
+  out.clear();
+  const auto &edges = core.shape->edges;
+  const double reach = other.extent + margin;
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const Vec3 &p0 = core.vertices[edges[e][0]], &p1 = core.vertices[edges[e][1]];
+    const Vec3 d = p1 - p0;
+    const double t = std::min(1.0, std::max(0.0, (other.centroid - p0).dot(d) / d.squaredNorm()));
+    if ((p0 + t * d - other.centroid).squaredNorm() <= reach * reach) out.push_back(static_cast<int>(e));
+  }
+}
+
+void test_polytope_edge_pairs(const Core &a, const Core &b, double bias, ContactWorkspace &ws,
+                              SeparatingAxis &best)
+{
+  const double margin = std::abs(best.separation) + bias;
+  edges_near(a, b, margin, ws.edges_near_i);
+  edges_near(b, a, margin, ws.edges_near_j);
+  load_arcs(a, +1.0, ws.arcs_i);
+  load_arcs(b, -1.0, ws.arcs_j);
   const auto &edges_a = a.shape->edges, &edges_b = b.shape->edges;
-  const auto &faces_a = a.shape->edge_faces, &faces_b = b.shape->edge_faces;
-  for (size_t i = 0; i < edges_a.size(); ++i) {
+  for (int i : ws.edges_near_i) {
     const Vec3 &pa = a.vertices[edges_a[i][0]];
     const Vec3 ea = a.vertices[edges_a[i][1]] - pa;
-    const Vec3 &na0 = a.normals[faces_a[i][0]], &na1 = a.normals[faces_a[i][1]];
-    for (size_t j = 0; j < edges_b.size(); ++j) {
-      const Vec3 &nb0 = b.normals[faces_b[j][0]], &nb1 = b.normals[faces_b[j][1]];
-      if (!arcs_cross(na0, na1, -nb0, -nb1)) continue;
+    for (int j : ws.edges_near_j) {
+      if (!arcs_cross(ws.arcs_i[i], ws.arcs_j[j])) continue;
       const Vec3 &pb = b.vertices[edges_b[j][0]];
       Vec3 axis;
       if (!edge_axis(ea, b.vertices[edges_b[j][1]] - pb, axis)) continue;
@@ -115,14 +148,15 @@ void test_segment_edge_pairs(const Core &segment, const Core &polytope, double d
 
 }    // namespace
 
-SeparatingAxis find_separating_axis(const Core &a, const Core &b, double length_scale)
+SeparatingAxis find_separating_axis(const Core &a, const Core &b, double length_scale,
+                                    ContactWorkspace &ws)
 {
   SeparatingAxis best{-std::numeric_limits<double>::infinity(), Vec3::UnitX()};
   test_face_axes(a, b, +1.0, best);
   test_face_axes(b, a, -1.0, best);
   const double bias = Tolerance::kEdgeAxisBias * length_scale;
   if (a.is_polytope() && b.is_polytope()) {
-    test_polytope_edge_pairs(a, b, bias, best);
+    test_polytope_edge_pairs(a, b, bias, ws, best);
   } else if (a.is_polytope() && b.count == 2) {
     test_segment_edge_pairs(b, a, -1.0, bias, best);
   } else if (b.is_polytope() && a.count == 2) {
