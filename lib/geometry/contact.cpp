@@ -180,6 +180,22 @@ void check_segment(const Segment &segment, const char *which)
   }
 }
 
+// Two spheres: the line of centres (the most common pair in a sphere packing).
+void sphere_pair(const Spheropolyhedron &si, const Pose &pi, const Spheropolyhedron &sj,
+                 const Pose &pj, double activation, ContactSet &out)
+{
+  const Vec3 ci = pi.to_world(si.vertices[0]), cj = pj.to_world(sj.vertices[0]);
+  const Vec3 between = ci - cj;
+  const double distance = between.norm();
+  const double gap = distance - si.radius - sj.radius;
+  if (!(gap <= activation)) return;
+  // Concentric spheres have no line of centres: any fixed direction will do.
+  const Vec3 normal = distance > 0.0 ? Vec3(between / distance) : Vec3::UnitX();
+  const Vec3 point = 0.5 * (ci - si.radius * normal + cj + sj.radius * normal);
+  out.points[0] = {point, normal, gap, make_key(vertex_feature(0), vertex_feature(0))};
+  out.count = 1;
+}
+
 }    // namespace
 
 ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
@@ -193,6 +209,10 @@ ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
   if ((pose_j.position - pose_i.position).squaredNorm() > reach * reach) return out;
   check_shape(shape_i, "grain i");
   check_shape(shape_j, "grain j");
+  if (shape_i.is_sphere() && shape_j.is_sphere()) {
+    sphere_pair(shape_i, pose_i, shape_j, pose_j, activation, out);
+    return out;
+  }
 
   // Frame origin at grain i's centre: coordinates stay small, round-off stays relative.
   const Vec3 &origin = pose_i.position;
