@@ -100,7 +100,7 @@ int choose_spanning_points(const std::vector<Candidate> &pts, const Vec3 &normal
 }    // namespace
 
 void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
-                       const Vec3 &origin, double /*merge_distance*/, ContactSet &out)
+                       const Vec3 &origin, ContactSet &out)
 {
   const auto &pts = workspace.candidates;
   std::array<int, ContactSet::kMaxPoints> chosen{};
@@ -221,7 +221,7 @@ ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
   const double merge = merge_distance_for(shape_i.bounding_radius, shape_j.bounding_radius);
   const ManifoldInput in{activation, std::max(shape_i.bounding_radius, shape_j.bounding_radius), merge};
   const Vec3 normal = build_manifold(a, b, in, ws);
-  write_contact_set(ws, normal, origin, merge, out);
+  write_contact_set(ws, normal, origin, out);
   return out;
 }
 

@@ -69,7 +69,7 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &input,
 // Reduces workspace.candidates to at most ContactSet::kMaxPoints points covering the
 // patch (deepest point first) and writes them, in the frame shifted back by origin.
 void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
-                       const Vec3 &origin, double merge_distance, ContactSet &out);
+                       const Vec3 &origin, ContactSet &out);
 
 }    // namespace geometry_detail
 }    // namespace nscd

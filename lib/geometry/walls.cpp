@@ -80,7 +80,7 @@ ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
     const Vec3 position = v - 0.5 * (height + shape.radius) * normal;
     ws.candidates.push_back({position, v, gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
   }
-  write_contact_set(ws, normal, pose.position, 0.0, out);
+  write_contact_set(ws, normal, pose.position, out);
   return out;
 }
 
@@ -124,7 +124,7 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
   }
   // Reduce on the plane tangent at the deepest point, then give each point its own
   // normal (the wall is curved): from the wall towards the axis.
-  write_contact_set(ws, -deepest_outward, pose.position, 0.0, out);
+  write_contact_set(ws, -deepest_outward, pose.position, out);
   for (int k = 0; k < out.count; ++k) {
     const Vec3 offset = out.points[k].point - wall.axis_point;
     const Vec3 radial = offset - axis.dot(offset) * axis;
