@@ -64,3 +64,6 @@ target_include_directories(lammps PRIVATE ${PROJECT_SOURCE_DIR}/src)
 target_link_libraries(lammps PUBLIC nscd_core)
 set_target_properties(lammps PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON)
 set_target_properties(lmp PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
+
+# Our own main(): flushes output before an abort (see src/main/lmp_main.cpp).
+set_property(TARGET lmp PROPERTY SOURCES ${PROJECT_SOURCE_DIR}/src/main/lmp_main.cpp)

@@ -190,3 +190,11 @@ AtomVecSpheropolyhedron *AtomVecSpheropolyhedron::find(LAMMPS *lmp, const char *
                     "hybrid); define it before this command", caller);
   return static_cast<AtomVecSpheropolyhedron *>(avec);
 }
+
+nscd::Pose AtomVecSpheropolyhedron::pose(int i) const
+{
+  nscd::Pose p;
+  p.position = nscd::Vec3(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
+  p.orientation = nscd::Quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
+  return p;
+}

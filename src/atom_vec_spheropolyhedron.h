@@ -41,6 +41,10 @@ class AtomVecSpheropolyhedron : public AtomVec {
   // Appends shapes and records the whole library in the atom style's arguments.
   void add_shapes(const nscd::ShapeLibrary &more);
 
+  // Where grain i is: position and orientation as the geometry code wants them.
+  nscd::Pose pose(int i) const;
+  const nscd::Spheropolyhedron &shape_of(int i) const { return library.shape(shape[i]); }
+
   // Gives atom i shape `shape_id` (0 = point) with the given mass; sets inertia and radius.
   void set_shape(int i, int shape_id, double mass);
 

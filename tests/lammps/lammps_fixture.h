@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,7 +39,7 @@ class LammpsTest : public ::testing::Test {
   }
 
   void run(const std::string &line) { lmp->input->one(line); }
-  void run(const std::vector<std::string> &lines)
+  void commands(const std::vector<std::string> &lines)
   {
     for (auto &line : lines) run(line);
   }
@@ -52,6 +53,14 @@ class LammpsTest : public ::testing::Test {
       return e.message;
     }
     return "";
+  }
+
+  // A number written with all its digits (std::to_string keeps only 6 decimals).
+  static std::string num(double value)
+  {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.17g", value);
+    return text;
   }
 
   int rank() const

@@ -60,11 +60,10 @@ class AtomStyleTest : public LammpsTest {
   // A box of grains on a lattice with random shapes and orientations.
   void make_grains(const std::string &style = "spheropolyhedron")
   {
-    run({"units lj", "atom_style " + style, "atom_modify map array", "boundary p p p",
+    commands({"units lj", "atom_style " + style, "atom_modify map array", "boundary p p p",
          "shapes read " + shape_file, "lattice sc 4.0", "region box block 0 4 0 3 0 2",
          "create_box 2 box", "create_atoms 1 box",
-         "shapes assign all shape random 1 2 4711 density 2.5 orient random 99",
-         "mass * 1.0"});
+         "shapes assign all shape random 1 2 4711 density 2.5 orient random 99"});
   }
 
   // Every atom's record by ID, gathered from all ranks.
@@ -114,7 +113,8 @@ class AtomStyleTest : public LammpsTest {
   }
 
   static void expect_same_atoms(const std::map<tagint, AtomRecord> &a,
-                                const std::map<tagint, AtomRecord> &b, double tol = 0.0)
+                                const std::map<tagint, AtomRecord> &b, double tol = 0.0,
+                                bool compare_positions = true)
   {
     ASSERT_EQ(a.size(), b.size());
     for (auto &kv : a) {
@@ -124,7 +124,7 @@ class AtomStyleTest : public LammpsTest {
       EXPECT_EQ(p.type, q.type);
       EXPECT_EQ(p.shape, q.shape) << "atom " << kv.first;
       for (int k = 0; k < 3; k++) {
-        EXPECT_NEAR(p.x[k], q.x[k], tol);
+        if (compare_positions) EXPECT_NEAR(p.x[k], q.x[k], tol);
         EXPECT_NEAR(p.inertia[k], q.inertia[k], tol * std::abs(p.inertia[k]));
         EXPECT_NEAR(p.omega[k], q.omega[k], tol);
       }
@@ -171,22 +171,23 @@ TEST_F(AtomStyleTest, RandomAssignmentDoesNotDependOnRankCount)
 {
   make_grains();
   auto atoms = all_atoms();
-  // Values derived from (seed, atom ID) only: recompute on one rank in a fresh instance
-  // with a different processor grid and compare.
+  // Shapes, masses and orientations come from (seed, atom ID) only: a fresh instance with
+  // another processor grid gives each ID the same values. (Which lattice site gets which
+  // ID does depend on the grid: that is create_atoms' numbering, not ours.)
   restart_instance();
   run("processors * * * map xyz");
   make_grains();
-  expect_same_atoms(atoms, all_atoms());
+  expect_same_atoms(atoms, all_atoms(), 0.0, false);
 }
 
 TEST_F(AtomStyleTest, DataFileRoundTripIsExact)
 {
   make_grains();
-  run({"velocity all create 1.0 12345 loop geom", "write_data " + scratch("grains.data"),
+  commands({"velocity all create 1.0 12345 loop geom", "write_data " + scratch("grains.data"),
        "shapes write " + scratch("written.shapes")});
   auto before = all_atoms();
   restart_instance();
-  run({"units lj", "atom_style spheropolyhedron", "atom_modify map array",
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array",
        "shapes read " + scratch("written.shapes"), "read_data " + scratch("grains.data")});
   auto after = all_atoms();
   // write_data prints 17 significant digits; the shape library is rebuilt from the written
@@ -197,7 +198,7 @@ TEST_F(AtomStyleTest, DataFileRoundTripIsExact)
 TEST_F(AtomStyleTest, RestartRoundTripIsExactAndCarriesTheShapes)
 {
   make_grains();
-  run({"velocity all create 1.0 12345 loop geom", "write_restart " + scratch("grains.restart")});
+  commands({"velocity all create 1.0 12345 loop geom", "write_restart " + scratch("grains.restart")});
   auto before = all_atoms();
   const int nshapes = avec()->shapes().size();
   restart_instance();
@@ -214,7 +215,7 @@ TEST_F(AtomStyleTest, RestartRoundTripIsExactAndCarriesTheShapes)
 
 TEST_F(AtomStyleTest, HybridWithAngleKeepsShapesThroughRestart)
 {
-  run({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+  commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
        "boundary p p p", "shapes read " + shape_file, "region box block 0 10 0 10 0 10",
        "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 2 "
        "extra/angle/per/atom 1",
@@ -238,7 +239,7 @@ TEST_F(AtomStyleTest, AtomsMigrateWithTheirData)
   make_grains();
   auto before = all_atoms();
   // Move everything by half the box: on 2+ ranks most atoms change owner.
-  run({"displace_atoms all move 8.0 6.0 4.0 units box"});
+  commands({"displace_atoms all move 8.0 6.0 4.0 units box"});
   auto after = all_atoms();
   ASSERT_EQ(after.size(), before.size());
   for (auto &kv : before) {
@@ -257,7 +258,7 @@ TEST_F(AtomStyleTest, AtomsMigrateWithTheirData)
 
 TEST_F(AtomStyleTest, DumpWritesTrueShapesInWorldCoordinates)
 {
-  run({"units lj", "atom_style spheropolyhedron", "boundary f f f", "shapes read " + shape_file,
+  commands({"units lj", "atom_style spheropolyhedron", "boundary f f f", "shapes read " + shape_file,
        "region box block -10 10 -10 10 -10 10", "create_box 1 box",
        "create_atoms 1 single 1 2 3", "shapes assign all shape 1 density 1 orient quat 0 0 0 1",
        "dump d all grains/vtk 1 " + scratch("grain.*.vtk"), "run 0"});
@@ -300,12 +301,12 @@ TEST_F(AtomStyleTest, DumpWritesTrueShapesInWorldCoordinates)
 TEST_F(AtomStyleTest, BadInputGivesErrorsThatNameTheProblem)
 {
   EXPECT_NE(error_of("shapes read x").find("needs atom_style spheropolyhedron"), std::string::npos);
-  run({"units lj", "atom_style spheropolyhedron"});
+  commands({"units lj", "atom_style spheropolyhedron"});
   EXPECT_NE(error_of("atom_style spheropolyhedron extra").find("takes no arguments"), std::string::npos);
   run("atom_style spheropolyhedron");
   EXPECT_NE(error_of("shapes read /nonexistent/file.shapes").find("/nonexistent/file.shapes"), std::string::npos);
   EXPECT_NE(error_of("shapes frobnicate").find("frobnicate"), std::string::npos);
-  run({"shapes read " + shape_file, "region box block 0 4 0 4 0 4", "create_box 1 box",
+  commands({"shapes read " + shape_file, "region box block 0 4 0 4 0 4", "create_box 1 box",
        "create_atoms 1 single 1 1 1"});
   EXPECT_NE(error_of("shapes assign all shape 3").find("outside the library"), std::string::npos);
   EXPECT_NE(error_of("shapes assign all shape 0 density 2").find("give its 'mass'"), std::string::npos);
@@ -321,10 +322,10 @@ TEST_F(AtomStyleTest, DataFileWithUnknownShapeIdIsRejected)
   if (rank() == 0) {
     std::ofstream out(scratch("bad.data"));
     out << "bad shape id\n\n1 atoms\n1 atom types\n\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\n"
-           "Masses\n\n1 1\n\nAtoms # spheropolyhedron\n\n1 1 7 1.0 5 5 5 1 0 0 0\n";
+           "Atoms # spheropolyhedron\n\n1 1 7 1.0 5 5 5 1 0 0 0\n";
   }
   MPI_Barrier(MPI_COMM_WORLD);
-  run({"units lj", "atom_style spheropolyhedron", "shapes read " + shape_file});
+  commands({"units lj", "atom_style spheropolyhedron", "shapes read " + shape_file});
   const std::string message = error_of("read_data " + scratch("bad.data"));
   EXPECT_NE(message.find("shape id 7"), std::string::npos) << message;
   EXPECT_NE(message.find("2 shape(s)"), std::string::npos) << message;

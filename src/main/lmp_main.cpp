@@ -1,0 +1,35 @@
+// main() of our `lmp`. LAMMPS is built with LAMMPS_EXCEPTIONS (so tests can check error
+// messages); LAMMPS' own main() then aborts on an error of one rank without flushing the
+// screen and log files, and the message is lost whenever output goes to a file or pipe.
+// This main flushes every open stream first; otherwise it runs LAMMPS as usual.
+#include "exceptions.h"
+#include "input.h"
+#include "lammps.h"
+
+#include <mpi.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+using LAMMPS_NS::LAMMPS;
+
+int main(int argc, char **argv)
+{
+  MPI_Init(&argc, &argv);
+  try {
+    auto *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
+    lammps->input->file();
+    delete lammps;
+  } catch (LAMMPS_NS::LAMMPSAbortException &abort) {
+    std::fflush(nullptr);    // the message is in the screen/log buffers of the failing rank
+    MPI_Abort(abort.universe, 1);
+  } catch (LAMMPS_NS::LAMMPSException &) {
+    std::fflush(nullptr);
+    MPI_Barrier(MPI_COMM_WORLD);
+    MPI_Finalize();
+    std::exit(1);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  MPI_Finalize();
+  return 0;
+}
