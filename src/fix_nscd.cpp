@@ -1,0 +1,438 @@
+/* fix nscd: gathers bodies and contacts from LAMMPS, runs lib/solver's Gauss-Seidel with
+   ghost exchanges between sweeps, and moves the grains (Moreau-Jean). */
+
+#include "fix_nscd.h"
+
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "modify.h"
+#include "nscd_boundary.h"
+#include "pair_nscd.h"
+#include "update.h"
+
+#include "solver/rigid_motion.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+enum Diagnostic {
+  SWEEPS, RESIDUAL, MAX_INTERPENETRATION, CONTACTS, ACTIVE, STICKING, SLIDING, CONVERGED,
+  KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
+};
+
+nscd::Vec3 vec3(const double *a) { return nscd::Vec3(a[0], a[1], a[2]); }
+void store(const nscd::Vec3 &v, double *a)
+{
+  a[0] = v.x();
+  a[1] = v.y();
+  a[2] = v.z();
+}
+nscd::Quat quat_of(const double *q) { return nscd::Quat(q[0], q[1], q[2], q[3]); }
+
+// One warm-start record as written to restart files.
+struct StoredContact {
+  std::int64_t tag_i, tag_j;
+  std::uint64_t feature;
+  double impulse[3];
+};
+}    // namespace
+
+/* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W]
+                     [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N] */
+FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  time_integrate = 1;
+  restart_global = 1;
+  vector_flag = 1;
+  size_vector = NDIAGNOSTICS;
+  global_freq = 1;
+  extvector = 0;
+  comm_forward = 12;
+  comm_reverse = 6;
+
+  for (int iarg = 3; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
+    const char *value = arg[iarg + 1];
+    if (key == "theta") options.theta = utils::numeric(FLERR, value, false, lmp);
+    else if (key == "tolerance") options.tolerance = utils::numeric(FLERR, value, false, lmp);
+    else if (key == "max_sweeps") options.max_sweeps = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "relaxation") options.relaxation = utils::numeric(FLERR, value, false, lmp);
+    else if (key == "seed") options.seed = (std::uint64_t) utils::bnumeric(FLERR, value, false, lmp);
+    else if (key == "exchange") exchange_every = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "warn") warn_every = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "order") {
+      const std::string order = value;
+      if (order == "as_given") options.order = nscd::SweepOrder::as_given;
+      else if (order == "shuffled") options.order = nscd::SweepOrder::shuffled;
+      else if (order == "forward_backward") options.order = nscd::SweepOrder::forward_backward;
+      else
+        error->all(FLERR, "fix nscd: unknown order '{}' (expected as_given, shuffled or "
+                   "forward_backward)", order);
+    } else {
+      error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
+                 "relaxation, order, seed, exchange, warn)", key);
+    }
+  }
+  if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
+  if (warn_every < 1) error->all(FLERR, "fix nscd: warn {} must be >= 1", warn_every);
+  options.dt = 1.0;    // validated for real in init(), with the run's timestep
+  try {
+    options.validate();
+  } catch (std::exception &e) {
+    error->all(FLERR, "fix nscd: {}", e.what());
+  }
+}
+
+int FixNSCD::setmask()
+{
+  return FINAL_INTEGRATE;
+}
+
+void FixNSCD::init()
+{
+  avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd");
+  pair = dynamic_cast<PairNSCD *>(force->pair_match("^nscd", 0));
+  if (!pair)
+    error->all(FLERR, "fix nscd needs pair_style nscd (it finds the grain contacts); add "
+               "'pair_style nscd' and 'pair_coeff * * FRICTION'");
+  dt = update->dt;
+  find_partners();
+
+  // Every atom of the group must be a grain: points (wire nodes) belong to the wire fix.
+  tagint first_point = MAXTAGINT, any_point;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && avec->shape[i] == 0) first_point = std::min(first_point, atom->tag[i]);
+  MPI_Allreduce(&first_point, &any_point, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any_point != MAXTAGINT)
+    error->all(FLERR, "fix nscd: atom ID {} in group '{}' is a point (shape 0), not a grain; "
+               "use a group of grains only", any_point, group->names[igroup]);
+}
+
+void FixNSCD::find_partners()
+{
+  boundaries.clear();
+  for (int f = 0; f < modify->nfix; f++)
+    if (auto *b = dynamic_cast<NSCDBoundary *>(modify->fix[f])) boundaries.push_back(b);
+}
+
+void FixNSCD::setup(int /*vflag*/)
+{
+  measure_kinetic_energy();
+}
+
+void FixNSCD::reset_dt()
+{
+  dt = update->dt;
+}
+
+/* One Moreau-Jean step: contacts at the current positions (found in this step's force
+   phase), impulses solved, then velocities and positions of the group's grains updated. */
+void FixNSCD::final_integrate()
+{
+  dt = update->dt;
+  exchange_mode = Exchange::state;
+  comm->forward_comm_fix(this, 12);
+  build_bodies();
+  gather_contacts();
+  solve();
+  move_grains();
+  hand_back_forces();
+  warm_start.store(problem.contacts);
+  warn_if_unconverged();
+  measure_kinetic_energy();
+}
+
+void FixNSCD::build_bodies()
+{
+  const int ntotal = atom->nlocal + atom->nghost;
+  problem.bodies.resize(ntotal);
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  for (int b = 0; b < ntotal; b++) {
+    nscd::SolverBody &body = problem.bodies[b];
+    body.position = vec3(x[b]);
+    body.velocity = vec3(v[b]);
+    body.angular_velocity = vec3(avec->omega[b]);
+    const bool mobile = (atom->mask[b] & groupbit) && avec->shape[b] != 0;
+    if (!mobile) {    // not integrated here: moves with its own velocity, infinite mass
+      body.inv_mass = 0.0;
+      body.inv_inertia.setZero();
+      body.external_impulse.setZero();
+      body.external_angular_impulse.setZero();
+      continue;
+    }
+    const nscd::Vec3 moments = vec3(avec->inertia[b]);
+    const nscd::Quat q = quat_of(avec->quat[b]);
+    body.inv_mass = 1.0 / avec->rmass[b];
+    body.inv_inertia = nscd::world_inverse_inertia(moments, q);
+    body.external_impulse = dt * vec3(f[b]);
+    body.external_angular_impulse =
+        dt * (vec3(avec->torque[b]) + nscd::gyroscopic_torque(moments, q, body.angular_velocity));
+  }
+}
+
+void FixNSCD::gather_contacts()
+{
+  problem.contacts = pair->contacts();
+  boundary_counts.assign(boundaries.size(), 0);
+  for (size_t k = 0; k < boundaries.size(); k++) {
+    const size_t before = problem.contacts.size();
+    boundaries[k]->append_contacts(problem.contacts, pair->activation_distance());
+    boundary_counts[k] = (int) (problem.contacts.size() - before);
+  }
+  if (!restored_contacts.empty()) {    // first step after read_restart
+    warm_start.store(restored_contacts);
+    restored_contacts.clear();
+  }
+  warm_start.apply(problem.contacts);
+}
+
+/* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of
+   ghost grains go to their owners and the owners' velocities back to all copies, so every
+   rank iterates on the same global velocities. The convergence test is global. */
+void FixNSCD::solve()
+{
+  options.dt = dt;
+  try {
+    problem.prepare(options);
+  } catch (std::exception &e) {
+    error->one(FLERR, "fix nscd: {}", e.what());
+  }
+  exchange_velocities();
+  report = nscd::SolveReport();
+  report.terms = global_terms();
+  report.residual = report.terms.residual();
+  while (report.residual > options.tolerance && report.sweeps < options.max_sweeps) {
+    problem.sweep();
+    report.sweeps++;
+    if (report.sweeps % exchange_every != 0 && report.sweeps < options.max_sweeps) continue;
+    exchange_velocities();
+    report.terms = global_terms();
+    report.residual = report.terms.residual();
+  }
+  report.converged = report.residual <= options.tolerance;
+  problem.finish();
+}
+
+void FixNSCD::exchange_velocities()
+{
+  exchange_mode = Exchange::correction;
+  comm->reverse_comm_fix(this, 6);
+  exchange_mode = Exchange::velocity;
+  comm->forward_comm_fix(this, 6);
+  problem.mark_synchronised();
+}
+
+nscd::ResidualTerms FixNSCD::global_terms() const
+{
+  const nscd::ResidualTerms mine = problem.residual_terms();
+  double sums[7] = {mine.error_squared, mine.scale_squared, (double) mine.contacts,
+                    (double) mine.active, (double) mine.sticking, (double) mine.sliding,
+                    (double) mine.local_failures};
+  double total[7];
+  MPI_Allreduce(sums, total, 7, MPI_DOUBLE, MPI_SUM, world);
+  nscd::ResidualTerms all;
+  all.error_squared = total[0];
+  all.scale_squared = total[1];
+  all.contacts = (long) total[2];
+  all.active = (long) total[3];
+  all.sticking = (long) total[4];
+  all.sliding = (long) total[5];
+  all.local_failures = (long) total[6];
+  MPI_Allreduce(&mine.max_interpenetration, &all.max_interpenetration, 1, MPI_DOUBLE, MPI_MAX, world);
+  return all;
+}
+
+void FixNSCD::move_grains()
+{
+  double **x = atom->x, **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const nscd::SolverBody &body = problem.bodies[i];
+    nscd::Pose pose;
+    pose.position = vec3(x[i]);
+    pose.orientation = quat_of(avec->quat[i]);
+    nscd::advance_pose(pose, vec3(v[i]), vec3(avec->omega[i]), body.velocity,
+                       body.angular_velocity, dt, options.theta);
+    store(pose.position, x[i]);
+    avec->quat[i][0] = pose.orientation.w();
+    avec->quat[i][1] = pose.orientation.x();
+    avec->quat[i][2] = pose.orientation.y();
+    avec->quat[i][3] = pose.orientation.z();
+    store(body.velocity, v[i]);
+    store(body.angular_velocity, avec->omega[i]);
+  }
+  for (NSCDBoundary *b : boundaries) b->advance(dt);
+}
+
+/* Solved impulses / dt are the contact forces of the step: virial for pair nscd, reactions
+   for the boundaries. */
+void FixNSCD::hand_back_forces()
+{
+  const std::vector<nscd::Contact> &c = problem.contacts;
+  const size_t ngrain = pair->contacts().size();
+  for (size_t k = 0; k < ngrain; k++) {
+    const double force[3] = {c[k].impulse.x() / dt, c[k].impulse.y() / dt, c[k].impulse.z() / dt};
+    pair->tally_contact_force(c[k].body_i, c[k].body_j, force);
+  }
+  size_t first = ngrain;
+  for (size_t k = 0; k < boundaries.size(); k++) {
+    boundaries[k]->take_impulses(c.data() + first, boundary_counts[k], dt);
+    first += boundary_counts[k];
+  }
+}
+
+void FixNSCD::warn_if_unconverged()
+{
+  if (report.converged) return;
+  unconverged_steps++;
+  const bigint step = update->ntimestep;
+  if (last_warning_step >= 0 && step - last_warning_step < warn_every) return;
+  last_warning_step = step;
+  if (comm->me == 0)
+    error->warning(FLERR, "fix nscd: step {} ended unconverged: residual {:.3g} > tolerance {:.3g} "
+                   "after {} sweeps ({} unconverged steps so far); raise max_sweeps, lower the "
+                   "timestep, or check the scene", step, report.residual, options.tolerance,
+                   report.sweeps, unconverged_steps);
+}
+
+void FixNSCD::measure_kinetic_energy()
+{
+  double mine[2] = {0.0, 0.0};
+  double **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    mine[0] += 0.5 * avec->rmass[i] * vec3(v[i]).squaredNorm();
+    const nscd::Vec3 w_body = quat_of(avec->quat[i]).conjugate() * vec3(avec->omega[i]);
+    mine[1] += 0.5 * w_body.dot(vec3(avec->inertia[i]).cwiseProduct(w_body));
+  }
+  double total[2];
+  MPI_Allreduce(mine, total, 2, MPI_DOUBLE, MPI_SUM, world);
+  kinetic_translational = total[0];
+  kinetic_rotational = total[1];
+}
+
+double FixNSCD::compute_vector(int n)
+{
+  switch (n) {
+    case SWEEPS: return report.sweeps;
+    case RESIDUAL: return report.residual;
+    case MAX_INTERPENETRATION: return report.terms.max_interpenetration;
+    case CONTACTS: return (double) report.terms.contacts;
+    case ACTIVE: return (double) report.terms.active;
+    case STICKING: return (double) report.terms.sticking;
+    case SLIDING: return (double) report.terms.sliding;
+    case CONVERGED: return report.converged ? 1.0 : 0.0;
+    case KE_TRANSLATION: return kinetic_translational;
+    case KE_ROTATION: return kinetic_rotational;
+  }
+  return 0.0;
+}
+
+/* Communication: `state` sends v, omega, f, torque to ghosts before the solve; during it,
+   `correction` sums ghost velocity changes into owners and `velocity` copies owners'
+   solver velocities to their ghosts. */
+int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int i = list[k];
+    if (exchange_mode == Exchange::state) {
+      for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
+        for (int d = 0; d < 3; d++) buf[m++] = a[d];
+    } else {
+      const nscd::SolverBody &body = problem.bodies[i];
+      for (int d = 0; d < 3; d++) buf[m++] = body.velocity[d];
+      for (int d = 0; d < 3; d++) buf[m++] = body.angular_velocity[d];
+    }
+  }
+  return m;
+}
+
+void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    if (exchange_mode == Exchange::state) {
+      for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
+        for (int d = 0; d < 3; d++) a[d] = buf[m++];
+    } else {
+      nscd::SolverBody &body = problem.bodies[i];
+      for (int d = 0; d < 3; d++) body.velocity[d] = buf[m++];
+      for (int d = 0; d < 3; d++) body.angular_velocity[d] = buf[m++];
+    }
+  }
+}
+
+int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    const nscd::Vec3 dv = problem.velocity_correction(i), dw = problem.angular_velocity_correction(i);
+    for (int d = 0; d < 3; d++) buf[m++] = dv[d];
+    for (int d = 0; d < 3; d++) buf[m++] = dw[d];
+  }
+  return m;
+}
+
+void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    nscd::SolverBody &body = problem.bodies[list[k]];
+    for (int d = 0; d < 3; d++) body.velocity[d] += buf[m++];
+    for (int d = 0; d < 3; d++) body.angular_velocity[d] += buf[m++];
+  }
+}
+
+/* Restart: the last solved impulses of all contacts, so that a continued run warm-starts
+   exactly as the uninterrupted one. */
+void FixNSCD::write_restart(FILE *fp)
+{
+  std::vector<StoredContact> mine;
+  for (const nscd::Contact &c : problem.contacts)
+    mine.push_back({c.key.tag_i, c.key.tag_j, c.key.feature,
+                    {c.impulse.x(), c.impulse.y(), c.impulse.z()}});
+  int bytes = (int) (mine.size() * sizeof(StoredContact));
+  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
+  MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  for (int r = 1; r < comm->nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<char> all(comm->me == 0 ? offsets.back() + counts.back() : 0);
+  MPI_Gatherv(mine.data(), bytes, MPI_CHAR, all.data(), counts.data(), offsets.data(), MPI_CHAR,
+              0, world);
+  if (comm->me == 0) {    // size of the block, then the record count, then the records
+    const int count = (int) (all.size() / sizeof(StoredContact));
+    const int size = (int) (sizeof(int) + all.size());
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(&count, sizeof(int), 1, fp);
+    fwrite(all.data(), 1, all.size(), fp);
+  }
+}
+
+void FixNSCD::restart(char *buf)
+{
+  // read_restart hands every rank the block written above, after its size.
+  int count;
+  std::memcpy(&count, buf, sizeof(int));
+  const char *records = buf + sizeof(int);
+  restored_contacts.clear();
+  for (int k = 0; k < count; k++) {
+    StoredContact s;
+    std::memcpy(&s, records + k * sizeof(StoredContact), sizeof(StoredContact));
+    nscd::Contact c;
+    c.key.tag_i = s.tag_i;
+    c.key.tag_j = s.tag_j;
+    c.key.feature = s.feature;
+    c.impulse = nscd::Vec3(s.impulse[0], s.impulse[1], s.impulse[2]);
+    restored_contacts.push_back(c);
+  }
+}

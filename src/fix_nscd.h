@@ -1,0 +1,84 @@
+/* fix nscd: time integration of rigid spheropolyhedra by Non-Smooth Contact Dynamics
+   (Moreau-Jean theta-method, nonlinear Gauss-Seidel with the Signorini condition and exact
+   Coulomb friction). Contacts come from pair_style nscd and from boundary fixes
+   (fix nscd/wall); the solver is lib/solver. See doc/fix_nscd.md. */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(nscd,FixNSCD);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_NSCD_H
+#define LMP_FIX_NSCD_H
+
+#include "fix.h"
+
+#include "solver/contact_problem.h"
+#include "solver/warm_start.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixNSCD : public Fix {
+ public:
+  FixNSCD(class LAMMPS *, int, char **);
+
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void final_integrate() override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // The contacts of the last solve (grain-grain first, then boundaries), with impulses.
+  const std::vector<nscd::Contact> &contacts() const { return problem.contacts; }
+  double timestep() const { return dt; }
+
+ private:
+  nscd::SolverOptions options;
+  int exchange_every = 1;       // sweeps between ghost velocity exchanges
+  int warn_every = 1000;        // steps between repeated "unconverged" warnings
+  double dt = 0.0;
+
+  class PairNSCD *pair = nullptr;
+  class AtomVecSpheropolyhedron *avec = nullptr;
+  std::vector<class NSCDBoundary *> boundaries;
+  std::vector<int> boundary_counts;
+
+  nscd::ContactProblem problem;
+  nscd::WarmStartCache warm_start;
+  std::vector<nscd::Contact> restored_contacts;    // warm start read from a restart file
+
+  enum class Exchange { state, correction, velocity } exchange_mode = Exchange::state;
+
+  // diagnostics of the last step
+  nscd::SolveReport report;
+  bigint unconverged_steps = 0, last_warning_step = -1;
+  double kinetic_translational = 0.0, kinetic_rotational = 0.0;
+
+  void find_partners();
+  void build_bodies();
+  void gather_contacts();
+  void solve();
+  void exchange_velocities();
+  nscd::ResidualTerms global_terms() const;
+  void move_grains();
+  void hand_back_forces();
+  void warn_if_unconverged();
+  void measure_kinetic_energy();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

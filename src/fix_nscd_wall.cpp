@@ -1,0 +1,175 @@
+/* fix nscd/wall: the wall's contacts with owned grains, via lib/geometry. */
+
+#include "fix_nscd_wall.h"
+
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
+{
+  return nscd::Vec3(utils::numeric(FLERR, arg[0], false, lmp), utils::numeric(FLERR, arg[1], false, lmp),
+                    utils::numeric(FLERR, arg[2], false, lmp));
+}
+
+// A stable negative id for the wall in contact keys (FNV-1a of the fix ID), so that
+// warm starts survive other fixes being added or removed, and restarts.
+std::int64_t tag_from_id(const char *id)
+{
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const char *c = id; *c; c++) h = (h ^ (unsigned char) *c) * 1099511628211ULL;
+  return -(std::int64_t) (h >> 2) - 1;
+}
+}    // namespace
+
+/* fix ID group nscd/wall plane PX PY PZ NX NY NZ [options]
+   fix ID group nscd/wall cylinder CX CY CZ AX AY AZ R [options]
+   options: friction MU, restitution E, velocity VX VY VZ */
+FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  vector_flag = 1;
+  size_vector = 6;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  wall_tag = tag_from_id(id);
+
+  const char *usage = "expected 'fix ID group nscd/wall plane PX PY PZ NX NY NZ' or 'fix ID group "
+                      "nscd/wall cylinder CX CY CZ AX AY AZ R', then friction/restitution/velocity";
+  if (narg < 4) error->all(FLERR, "Illegal fix nscd/wall command: {}", usage);
+  int iarg;
+  if (strcmp(arg[3], "plane") == 0) {
+    if (narg < 10) error->all(FLERR, "Illegal fix nscd/wall plane command: {}", usage);
+    kind = Kind::plane;
+    plane.point = read_vec3(lmp, &arg[4]);
+    const nscd::Vec3 n = read_vec3(lmp, &arg[7]);
+    if (!(n.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the plane normal (0 0 0) has no direction");
+    plane.normal = n.normalized();
+    iarg = 10;
+  } else if (strcmp(arg[3], "cylinder") == 0) {
+    if (narg < 11) error->all(FLERR, "Illegal fix nscd/wall cylinder command: {}", usage);
+    kind = Kind::cylinder;
+    cylinder.axis_point = read_vec3(lmp, &arg[4]);
+    const nscd::Vec3 a = read_vec3(lmp, &arg[7]);
+    if (!(a.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the cylinder axis (0 0 0) has no direction");
+    cylinder.axis_direction = a.normalized();
+    cylinder.radius = utils::numeric(FLERR, arg[10], false, lmp);
+    if (!(cylinder.radius > 0.0))
+      error->all(FLERR, "fix nscd/wall: cylinder radius {} must be positive", cylinder.radius);
+    iarg = 11;
+  } else {
+    error->all(FLERR, "fix nscd/wall: unknown wall '{}' ({})", arg[3], usage);
+  }
+  while (iarg < narg) iarg = parse_option(narg, arg, iarg);
+}
+
+int FixNSCDWall::parse_option(int narg, char **arg, int iarg)
+{
+  const std::string key = arg[iarg];
+  if (key == "friction" && iarg + 1 < narg) {
+    friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!(friction >= 0.0) || !std::isfinite(friction))
+      error->all(FLERR, "fix nscd/wall: friction {} must be finite and >= 0", friction);
+    return iarg + 2;
+  }
+  if (key == "restitution" && iarg + 1 < narg) {
+    restitution = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!(restitution >= 0.0 && restitution <= 1.0))
+      error->all(FLERR, "fix nscd/wall: restitution {} must be in [0, 1]", restitution);
+    return iarg + 2;
+  }
+  if (key == "velocity" && iarg + 3 < narg) {
+    velocity = read_vec3(lmp, &arg[iarg + 1]);
+    return iarg + 4;
+  }
+  error->all(FLERR, "fix nscd/wall: unknown or incomplete keyword '{}' (expected friction MU, "
+             "restitution E, velocity VX VY VZ)", key);
+  return narg;
+}
+
+/* fix_modify ID velocity VX VY VZ | friction MU | restitution E */
+int FixNSCDWall::modify_param(int narg, char **arg)
+{
+  const std::string key = arg[0];
+  if (key != "velocity" && key != "friction" && key != "restitution") return 0;
+  const int used = parse_option(narg, arg, 0);
+  return used;
+}
+
+void FixNSCDWall::init()
+{
+  avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/wall");
+  if (modify->find_fix_by_style("^nscd$") < 0)
+    error->all(FLERR, "fix nscd/wall {} has no effect without fix nscd (which solves its "
+               "contacts); define fix nscd as well", id);
+}
+
+void FixNSCDWall::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+{
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    const nscd::ContactSet set = kind == Kind::plane
+        ? nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), plane, activation, workspace)
+        : nscd::contact_grain_cylinder(avec->shape_of(i), avec->pose(i), cylinder, activation, workspace);
+    for (const nscd::ContactPoint &p : set) {
+      nscd::Contact c;
+      c.body_i = i;
+      c.body_j = nscd::kEnvironment;
+      c.point = p.point;
+      c.normal = p.normal;
+      c.gap = p.gap;
+      c.friction = friction;
+      c.restitution = restitution;
+      c.wall_velocity = velocity;
+      c.key.tag_i = atom->tag[i];
+      c.key.tag_j = wall_tag;
+      c.key.feature = p.key;
+      contacts.push_back(c);
+    }
+  }
+}
+
+void FixNSCDWall::take_impulses(const nscd::Contact *first, int count, double dt)
+{
+  nscd::Vec3 mine = nscd::Vec3::Zero();
+  for (int k = 0; k < count; k++) mine -= first[k].impulse;    // impulse on the grain: minus on the wall
+  mine /= dt;
+  MPI_Allreduce(mine.data(), reaction.data(), 3, MPI_DOUBLE, MPI_SUM, world);
+}
+
+void FixNSCDWall::advance(double dt)
+{
+  reference_point() += dt * velocity;
+}
+
+double FixNSCDWall::compute_vector(int n)
+{
+  if (n < 3) return reaction[n];
+  return reference_point()[n - 3];
+}
+
+void FixNSCDWall::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const nscd::Vec3 &p = reference_point();
+  const double state[3] = {p.x(), p.y(), p.z()};
+  const int size = sizeof(state);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(state, sizeof(double), 3, fp);
+}
+
+void FixNSCDWall::restart(char *buf)
+{
+  double state[3];
+  std::memcpy(state, buf, sizeof(state));
+  reference_point() = nscd::Vec3(state[0], state[1], state[2]);
+}

@@ -1,0 +1,32 @@
+/* What fix nscd needs from a fix that puts boundaries (walls, the loading plate) into the
+   contact problem. Such a fix derives from Fix and from this interface; fix nscd finds it
+   among the defined fixes. */
+
+#ifndef LMP_NSCD_BOUNDARY_H
+#define LMP_NSCD_BOUNDARY_H
+
+#include "solver/contact_problem.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class NSCDBoundary {
+ public:
+  virtual ~NSCDBoundary() = default;
+
+  // Appends the contacts of the boundary with OWNED grains (so each contact is on exactly
+  // one rank). body_i is the local atom index, body_j = nscd::kEnvironment.
+  virtual void append_contacts(std::vector<nscd::Contact> &contacts, double activation) = 0;
+
+  // After the solve: the contacts this boundary appended, with their solved impulses, in
+  // the order it appended them; dt turns impulses into forces. Called on every rank.
+  virtual void take_impulses(const nscd::Contact *first, int count, double dt) = 0;
+
+  // Moves the boundary by one step (prescribed velocity), after the grains have moved.
+  virtual void advance(double dt) = 0;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

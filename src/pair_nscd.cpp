@@ -1,0 +1,256 @@
+/* pair_style nscd: narrow phase over LAMMPS' neighbour list, contact laws per type pair. */
+
+#include "pair_nscd.h"
+
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+
+#include "geometry/feature_key.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp)
+{
+  single_enable = 0;
+  restartinfo = 1;
+  no_virial_fdotr_compute = 1;    // the contact forces are known only after fix nscd's solve
+  finitecutflag = 1;
+}
+
+PairNSCD::~PairNSCD()
+{
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(mu);
+    memory->destroy(restitution_coeff);
+  }
+}
+
+void PairNSCD::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(mu, n + 1, n + 1, "pair:mu");
+  memory->create(restitution_coeff, n + 1, n + 1, "pair:restitution");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      mu[i][j] = restitution_coeff[i][j] = 0.0;
+    }
+}
+
+/* pair_style nscd [activation D | activation/fraction F] */
+void PairNSCD::settings(int narg, char **arg)
+{
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (iarg + 1 >= narg)
+      error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
+    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (strcmp(arg[iarg], "activation") == 0) {
+      if (value < 0.0) error->all(FLERR, "pair_style nscd: activation {} must be >= 0", value);
+      activation_given = value;
+    } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
+      if (value < 0.0) error->all(FLERR, "pair_style nscd: activation/fraction {} must be >= 0", value);
+      activation_given = -1.0;
+      activation_fraction = value;
+    } else {
+      error->all(FLERR, "Illegal pair_style nscd command: unknown keyword '{}' (expected "
+                 "activation or activation/fraction)", arg[iarg]);
+    }
+  }
+}
+
+/* pair_coeff I J MU [restitution E] */
+void PairNSCD::coeff(int narg, char **arg)
+{
+  if (narg != 3 && narg != 5)
+    error->all(FLERR, "Illegal pair_coeff command for pair_style nscd: expected 'pair_coeff I J "
+               "friction [restitution E]'");
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double friction_one = utils::numeric(FLERR, arg[2], false, lmp);
+  if (!(friction_one >= 0.0) || !std::isfinite(friction_one))
+    error->all(FLERR, "pair_coeff nscd: friction coefficient {} must be finite and >= 0", friction_one);
+  double restitution_one = 0.0;
+  if (narg == 5) {
+    if (strcmp(arg[3], "restitution") != 0)
+      error->all(FLERR, "pair_coeff nscd: unknown keyword '{}' (expected restitution)", arg[3]);
+    restitution_one = utils::numeric(FLERR, arg[4], false, lmp);
+    if (!(restitution_one >= 0.0 && restitution_one <= 1.0))
+      error->all(FLERR, "pair_coeff nscd: restitution {} must be in [0, 1]", restitution_one);
+  }
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = std::max(jlo, i); j <= jhi; j++) {
+      mu[i][j] = friction_one;
+      restitution_coeff[i][j] = restitution_one;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "pair_coeff nscd: no type pair in {} {}", arg[0], arg[1]);
+}
+
+void PairNSCD::init_style()
+{
+  avec = AtomVecSpheropolyhedron::find(lmp, "pair_style nscd");
+  if (force->newton_pair == 0)
+    error->all(FLERR, "pair_style nscd needs 'newton on' (each contact is then found by exactly "
+               "one rank)");
+  if (avec->shapes().empty())
+    error->all(FLERR, "pair_style nscd: the shape library is empty; load shapes with "
+               "'shapes read' or 'shapes random'");
+  activation = activation_given;
+  if (activation < 0.0) {
+    double smallest = avec->shapes().shape(1).bounding_radius;
+    for (int id = 2; id <= avec->shapes().size(); id++)
+      smallest = std::min(smallest, avec->shapes().shape(id).bounding_radius);
+    activation = activation_fraction * smallest;
+  }
+  neighbor->request(this, instance_me);
+}
+
+double PairNSCD::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    error->all(FLERR, "pair_style nscd: no pair_coeff for types {} {} (every type pair needs "
+               "a friction coefficient)", i, j);
+  mu[j][i] = mu[i][j];
+  restitution_coeff[j][i] = restitution_coeff[i][j];
+  // Grains of any shape may carry any type: the neighbour cutoff covers the largest pair.
+  return 2.0 * avec->shapes().max_bounding_radius() + activation;
+}
+
+/* Grain-grain contacts of this step, over the half neighbour list (newton on: each pair
+   once on exactly one rank). Points (shape 0, wire nodes) are left to the wire styles. */
+void PairNSCD::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  found.clear();
+  const int inum = list->inum;
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = list->ilist[ii];
+    if (avec->shape[i] == 0) continue;
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      if (avec->shape[j] == 0) continue;
+      add_grain_contacts(i, j);
+    }
+  }
+}
+
+void PairNSCD::add_grain_contacts(int i, int j)
+{
+  double **x = atom->x;
+  const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+  const double reach = avec->radius[i] + avec->radius[j] + activation;
+  if (dx * dx + dy * dy + dz * dz >= reach * reach) return;    // bounding spheres apart
+  const nscd::ContactSet set =
+      nscd::contact_grains(avec->shape_of(i), avec->pose(i), avec->shape_of(j), avec->pose(j),
+                           activation, workspace);
+  const tagint tag_i = atom->tag[i], tag_j = atom->tag[j];
+  const int itype = atom->type[i], jtype = atom->type[j];
+  for (const nscd::ContactPoint &p : set) {
+    nscd::Contact c;
+    c.body_i = i;
+    c.body_j = j;
+    c.point = p.point;
+    c.normal = p.normal;
+    c.gap = p.gap;
+    c.friction = mu[itype][jtype];
+    c.restitution = restitution_coeff[itype][jtype];
+    // Warm-start keys name the feature pair in the order of increasing atom ID, so the
+    // same contact found as (j, i) on a later step maps to the same key.
+    c.key.tag_i = tag_i;
+    c.key.tag_j = tag_j;
+    c.key.feature = tag_i < tag_j ? p.key : nscd::swapped_key(p.key);
+    found.push_back(c);
+  }
+}
+
+void PairNSCD::tally_contact_force(int i, int j, const double *f)
+{
+  if (!vflag_either) return;
+  double **x = atom->x;
+  const double d[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+  const double v[6] = {d[0] * f[0], d[1] * f[1], d[2] * f[2],
+                       d[0] * f[1], d[0] * f[2], d[1] * f[2]};
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += v[k];
+  if (vflag_atom)
+    for (int k = 0; k < 6; k++) {
+      vatom[i][k] += 0.5 * v[k];
+      vatom[j][k] += 0.5 * v[k];
+    }
+}
+
+void PairNSCD::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        fwrite(&mu[i][j], sizeof(double), 1, fp);
+        fwrite(&restitution_coeff[i][j], sizeof(double), 1, fp);
+      }
+    }
+}
+
+void PairNSCD::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (!setflag[i][j]) continue;
+      if (me == 0) {
+        utils::sfread(FLERR, &mu[i][j], sizeof(double), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &restitution_coeff[i][j], sizeof(double), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(&mu[i][j], 1, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&restitution_coeff[i][j], 1, MPI_DOUBLE, 0, world);
+    }
+}
+
+void PairNSCD::write_restart_settings(FILE *fp)
+{
+  fwrite(&activation_given, sizeof(double), 1, fp);
+  fwrite(&activation_fraction, sizeof(double), 1, fp);
+}
+
+void PairNSCD::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &activation_given, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &activation_fraction, sizeof(double), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&activation_given, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&activation_fraction, 1, MPI_DOUBLE, 0, world);
+}
+
+void *PairNSCD::extract(const char *name, int &dim)
+{
+  dim = 2;
+  if (strcmp(name, "mu") == 0) return (void *) mu;
+  return nullptr;
+}

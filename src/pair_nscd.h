@@ -1,0 +1,67 @@
+/* pair_style nscd: finds the contacts between neighbouring grains (rigid spheropolyhedra)
+   and holds the per type-pair contact laws (friction, restitution). It adds no force of its
+   own: fix nscd solves the contact impulses and hands the resulting forces back here for
+   the virial (pressure, compute stress/atom). See doc/pair_nscd.md. */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(nscd,PairNSCD);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_NSCD_H
+#define LMP_PAIR_NSCD_H
+
+#include "pair.h"
+
+#include "geometry/contact.h"
+#include "solver/contact_problem.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairNSCD : public Pair {
+ public:
+  PairNSCD(class LAMMPS *);
+  ~PairNSCD() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void *extract(const char *, int &) override;
+
+  // Grain-grain contacts found by the last compute(): body indices are local atom
+  // indices (owned or ghost), keys are (tag, tag, feature) canonical for warm starting.
+  const std::vector<nscd::Contact> &contacts() const { return found; }
+  double activation_distance() const { return activation; }
+  double friction(int itype, int jtype) const { return mu[itype][jtype]; }
+  double restitution(int itype, int jtype) const { return restitution_coeff[itype][jtype]; }
+
+  // Adds the virial of a solved contact force (on i, -force on j) for pressure and
+  // per-atom stress; called by fix nscd after its solve, in the same timestep.
+  void tally_contact_force(int i, int j, const double *force);
+
+ protected:
+  double activation_given = -1.0;    // from `activation D`; < 0: use the fraction
+  double activation_fraction = 0.1;  // of the smallest bounding radius in the library
+  double activation = 0.0;           // in use, set by init_style()
+  double **mu = nullptr, **restitution_coeff = nullptr;
+  class AtomVecSpheropolyhedron *avec = nullptr;
+  std::vector<nscd::Contact> found;
+  nscd::ContactWorkspace workspace;
+
+  void allocate();
+  void add_grain_contacts(int i, int j);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

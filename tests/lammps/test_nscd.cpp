@@ -1,0 +1,258 @@
+// fix nscd + pair_style nscd + fix nscd/wall against closed-form statics and dynamics.
+// Units are LJ-like: g = 1 unless stated; boxes are unit cubes of density 1 (m = 1).
+#include "lammps_fixture.h"
+
+#include "atom_vec_spheropolyhedron.h"
+#include "fix_nscd.h"
+#include "modify.h"
+#include "output.h"
+#include "thermo.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+using namespace LAMMPS_NS;
+
+namespace {
+const char *kShapes = R"(# a unit cube and a flat 4 x 4 x 0.5 plate
+shape cube
+radius 0
+vertices 8
+0 0 0
+1 0 0
+0 1 0
+1 1 0
+0 0 1
+1 0 1
+0 1 1
+1 1 1
+end
+shape plate
+radius 0
+vertices 8
+0 0 0
+4 0 0
+0 4 0
+4 4 0
+0 0 0.5
+4 0 0.5
+0 4 0.5
+4 4 0.5
+end
+)";
+}    // namespace
+
+class NSCDTest : public LammpsTest {
+ protected:
+  void SetUp() override
+  {
+    LammpsTest::SetUp();
+    if (rank() == 0) std::ofstream(scratch("shapes")) << kShapes;
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
+  // A closed box of side 20 with a frictional floor at z = 0; grains added by the caller.
+  void scene(double mu = 0.5, const std::string &fix_options = "tolerance 1e-10 max_sweeps 2000")
+  {
+    commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+         "shapes read " + scratch("shapes"), "region box block -10 10 -10 10 -1 19",
+         "create_box 2 box", "pair_style nscd", "pair_coeff * * " + num(mu),
+         "neighbor 0.3 bin", "timestep 0.001",
+         "fix floor all nscd/wall plane 0 0 0 0 0 1 friction " + num(mu),
+         "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd " + fix_options});
+  }
+  void add_cube(double x, double y, double z, int type = 1)
+  {
+    run("create_atoms " + std::to_string(type) + " single " + num(x) + " " + num(y) + " " + num(z));
+  }
+
+  double fix_value(const std::string &fix_id, int index)
+  {
+    return lmp->modify->fix[lmp->modify->find_fix(fix_id.c_str())]->compute_vector(index);
+  }
+  FixNSCD *solver() { return dynamic_cast<FixNSCD *>(lmp->modify->fix[lmp->modify->find_fix("solver")]); }
+
+  // Position, velocity, angular velocity of the atom with this ID (gathered to all ranks).
+  std::vector<double> state_of(tagint tag)
+  {
+    std::vector<double> mine(9, 0.0), all(9, 0.0);
+    const int i = lmp->atom->map(tag);
+    auto avec = AtomVecSpheropolyhedron::find(lmp, "test");
+    if (i >= 0 && i < lmp->atom->nlocal)
+      for (int d = 0; d < 3; d++) {
+        mine[d] = lmp->atom->x[i][d];
+        mine[3 + d] = lmp->atom->v[i][d];
+        mine[6 + d] = avec->omega[i][d];
+      }
+    MPI_Allreduce(mine.data(), all.data(), 9, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  }
+
+  // Sum of normal forces between atoms a and b (b = 0: any wall), over all ranks.
+  double normal_force_between(tagint a, tagint b)
+  {
+    double mine = 0.0, all = 0.0;
+    const double dt = solver()->timestep();
+    for (const nscd::Contact &c : solver()->contacts()) {
+      const tagint i = c.key.tag_i, j = c.body_j >= 0 ? c.key.tag_j : 0;
+      if ((i == a && j == b) || (i == b && j == a)) mine += c.impulse.dot(c.normal) / dt;
+    }
+    MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  }
+};
+
+TEST_F(NSCDTest, BoxRestsOnPlaneWithFourContactsAndNoDrift)
+{
+  scene();
+  add_cube(0.3, -0.2, 0.5);
+  commands({"shapes assign all shape 1 density 1", "run 2000"});
+  const std::vector<double> s = state_of(1);
+  EXPECT_EQ(fix_value("solver", 3), 4.0);                  // four corner contacts
+  EXPECT_NEAR(fix_value("floor", 2), -1.0, 1e-9);          // reaction on the floor = -m g
+  EXPECT_NEAR(s[2], 0.5, 1e-9);                            // no sinking, no drift
+  EXPECT_NEAR(s[0], 0.3, 1e-12);
+  EXPECT_NEAR(s[1], -0.2, 1e-12);
+  for (int d = 3; d < 9; d++) EXPECT_NEAR(s[d], 0.0, 1e-9);    // at rest, no spurious spin
+  EXPECT_EQ(fix_value("solver", 7), 1.0);                  // converged
+}
+
+// Gravity tilted by theta stands for an incline: the block sticks for tan(theta) < mu and
+// otherwise slides with a = g (sin(theta) - mu cos(theta)).
+TEST_F(NSCDTest, BlockOnInclineSticksBelowAndSlidesAboveTheFrictionAngle)
+{
+  const double mu = 0.5;
+  for (double theta : {0.4, 0.6}) {    // tan 0.4 = 0.42 < 0.5 < tan 0.6 = 0.68
+    restart_instance();
+    scene(mu);
+    add_cube(0.0, 0.0, 0.5);
+    commands({"shapes assign all shape 1 density 1", "unfix g",
+         "fix g all gravity 1.0 vector " + num(std::sin(theta)) + " 0 " + num(-std::cos(theta)),
+         "run 500"});
+    const std::vector<double> s = state_of(1);
+    const double t = 0.5;
+    if (std::tan(theta) < mu) {
+      EXPECT_NEAR(s[3], 0.0, 1e-9) << "theta " << theta;
+      EXPECT_NEAR(s[0], 0.0, 1e-9) << "theta " << theta;
+    } else {
+      const double a = std::sin(theta) - mu * std::cos(theta);
+      EXPECT_NEAR(s[3], a * t, 1e-6 * a * t) << "theta " << theta;
+      EXPECT_NEAR(s[2], 0.5, 1e-9);          // stays on the plane
+      for (int d = 6; d < 9; d++) EXPECT_NEAR(s[d], 0.0, 1e-6);    // slides without tipping
+    }
+  }
+}
+
+TEST_F(NSCDTest, StackOfBoxesCarriesTheWeightAboveAtEachLevel)
+{
+  scene();
+  for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.0, 0.5 + k);    // staggered, still stable
+  commands({"shapes assign all shape 1 density 1", "run 1000"});
+  EXPECT_NEAR(fix_value("floor", 2), -4.0, 1e-8);
+  for (int k = 1; k <= 3; k++)    // contact between cube k and k+1 carries 4 - k weights
+    EXPECT_NEAR(normal_force_between(k, k + 1), 4.0 - k, 1e-7) << "level " << k;
+  for (int k = 1; k <= 4; k++) {
+    const std::vector<double> s = state_of(k);
+    EXPECT_NEAR(s[2], 0.5 + (k - 1), 1e-8);
+    EXPECT_NEAR(s[0], 0.1 * (k - 1), 1e-9);
+  }
+}
+
+TEST_F(NSCDTest, PyramidOfBoxesStaysStanding)
+{
+  scene();
+  add_cube(-0.55, 0.0, 0.5);
+  add_cube(0.55, 0.0, 0.5);
+  add_cube(0.0, 0.0, 1.5);
+  commands({"shapes assign all shape 1 density 1", "run 1000"});
+  EXPECT_NEAR(fix_value("floor", 2), -3.0, 1e-8);
+  // How the top block's weight splits over its two supports is statically indeterminate
+  // (each support is a patch, friction carries horizontal forces): only the total is fixed.
+  const double left = normal_force_between(1, 0), right = normal_force_between(2, 0);
+  EXPECT_NEAR(left + right, 3.0, 1e-8);
+  EXPECT_NEAR(normal_force_between(1, 3) + normal_force_between(2, 3), 1.0, 1e-8);
+  for (double support : {left, right}) {
+    EXPECT_GT(support, 1.0);
+    EXPECT_LT(support, 2.0);
+  }
+  const std::vector<double> top = state_of(3);
+  EXPECT_NEAR(top[0], 0.0, 1e-8);
+  EXPECT_NEAR(top[2], 1.5, 1e-8);
+}
+
+// A plate 200 times heavier than each of four cubes under it: no blow-up, the floor
+// carries everything, and the solver converges or says it did not.
+TEST_F(NSCDTest, HeavyPlateOnLightGrainsStaysBounded)
+{
+  scene(0.5, "tolerance 1e-8 max_sweeps 5000");
+  add_cube(-1.2, -1.2, 0.5);
+  add_cube(1.2, -1.2, 0.5);
+  add_cube(-1.2, 1.2, 0.5);
+  add_cube(1.2, 1.2, 0.5);
+  add_cube(0.0, 0.0, 1.25, 2);
+  commands({"group cubes type 1", "group plate type 2", "shapes assign cubes shape 1 density 1",
+       "shapes assign plate shape 2 mass 800", "run 500"});
+  const double weight = 4.0 + 800.0;
+  EXPECT_NEAR(fix_value("floor", 2), -weight, 1e-6 * weight);
+  const std::vector<double> plate = state_of(5);
+  EXPECT_NEAR(plate[2], 1.25, 1e-6);
+  for (int d = 3; d < 9; d++) EXPECT_TRUE(std::isfinite(plate[d]));
+  EXPECT_LT(fix_value("solver", 2), 1e-6);    // max interpenetration
+  EXPECT_EQ(fix_value("solver", 7), 1.0);
+}
+
+TEST_F(NSCDTest, RunContinuedFromRestartFollowsTheUninterruptedRun)
+{
+  auto setup_and_drop = [&]() {
+    scene();
+    for (int k = 0; k < 3; k++) add_cube(0.2 * k, 0.1 * k, 0.6 + 1.2 * k);
+    commands({"shapes assign all shape 1 density 1 orient random 5", "run 300"});
+  };
+  setup_and_drop();
+  commands({"write_restart " + scratch("mid.restart"), "run 300"});
+  std::vector<std::vector<double>> straight;
+  for (int k = 1; k <= 3; k++) straight.push_back(state_of(k));
+
+  restart_instance();
+  commands({"read_restart " + scratch("mid.restart"), "neighbor 0.3 bin",
+       "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+       "fix solver all nscd tolerance 1e-10 max_sweeps 2000", "run 300"});
+  for (int k = 1; k <= 3; k++) {
+    const std::vector<double> s = state_of(k);
+    for (int d = 0; d < 3; d++) EXPECT_NEAR(s[d], straight[k - 1][d], 1e-6) << "atom " << k;
+  }
+}
+
+TEST_F(NSCDTest, MovingWallPushesAndUnfixRemovesIt)
+{
+  scene(0.0);
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1",
+       "fix pusher all nscd/wall plane -1.0 0 0 1 0 0 velocity 0.5 0 0", "run 2000"});
+  // The wall meets the cube's face (x = -0.5) at t = 1, then pushes it (frictionless floor)
+  // at its own speed; at t = 2 the wall is at x = 0 and the cube's face with it.
+  const std::vector<double> s = state_of(1);
+  EXPECT_NEAR(s[3], 0.5, 1e-8);
+  EXPECT_NEAR(s[0], 0.5, 2e-3);
+  EXPECT_NEAR(fix_value("pusher", 3), 0.0, 1e-12);
+  commands({"unfix pusher", "run 100"});
+  EXPECT_NEAR(state_of(1)[3], 0.5, 1e-8);    // no wall: keeps its velocity
+}
+
+TEST_F(NSCDTest, BadInputNamesTheProblem)
+{
+  commands({"units lj", "atom_style spheropolyhedron", "boundary f f f", "shapes read " + scratch("shapes"),
+       "region box block -5 5 -5 5 -5 5", "create_box 1 box"});
+  EXPECT_NE(error_of("fix s all nscd theta 0").find("theta"), std::string::npos);
+  EXPECT_NE(error_of("fix s all nscd bogus 1").find("bogus"), std::string::npos);
+  EXPECT_NE(error_of("fix w all nscd/wall plane 0 0 0 0 0 0").find("no direction"), std::string::npos);
+  EXPECT_NE(error_of("fix w all nscd/wall cylinder 0 0 0 0 0 1 -2").find("radius"), std::string::npos);
+  EXPECT_NE(error_of("pair_coeff * * 0.5").find("pair_style"), std::string::npos);
+  run("pair_style nscd");
+  EXPECT_NE(error_of("pair_coeff * * -0.5").find("-0.5"), std::string::npos);
+  commands({"create_atoms 1 single 0 0 0", "fix s all nscd", "timestep 0.001"});
+  EXPECT_NE(error_of("run 1").find("pair coeffs are not set"), std::string::npos);
+  commands({"pair_coeff * * 0.3"});
+  EXPECT_NE(error_of("run 1").find("point (shape 0)"), std::string::npos);
+}
