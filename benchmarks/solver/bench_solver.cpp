@@ -120,6 +120,123 @@ BENCHMARK(BM_ColumnColdSolve)
     ->ArgsProduct({{4}, {2, 4, 6, 8, 10}, {0, 50}})
     ->Unit(benchmark::kMillisecond);
 
+// A pile of 384 spheres (radius 0.5, mass 1) in face-centred cubic order, 8 x 8 x 12 lattice
+// sites with i + j + k even, spacing 1/sqrt(2): every touching pair (distance 1) is a
+// contact, plus the floor and the four side walls; friction mu, gravity, at rest. Lattice
+// positions are jittered by +-1e-3 so normals are not axis-aligned. ~2000 contacts, the size
+// of the piles the LAMMPS runs solve.
+ContactProblem sphere_pile(double mu, double dt)
+{
+  constexpr int nx = 8, ny = 8, nz = 12;
+  const double spacing = 1.0 / std::sqrt(2.0), radius = 0.5;
+  const double moment = 0.4 * radius * radius;
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
+  ContactProblem problem;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        if ((i + j + k) % 2 != 0) continue;
+        SolverBody body;
+        body.position = Vec3(i * spacing + jitter(random), j * spacing + jitter(random),
+                             radius + k * spacing + jitter(random));
+        body.inv_mass = 1.0;
+        body.inv_inertia = (1.0 / moment) * Mat3::Identity();
+        body.external_impulse = Vec3(0.0, 0.0, -9.81 * dt);
+        problem.bodies.push_back(body);
+      }
+  const double low = -radius, high_x = (nx - 1) * spacing + radius, high_y = (ny - 1) * spacing + radius;
+  const int n = static_cast<int>(problem.bodies.size());
+  auto add = [&](int a, int b, const Vec3 &point, const Vec3 &normal, double gap) {
+    Contact contact;
+    contact.body_i = a;
+    contact.body_j = b;
+    contact.point = point;
+    contact.normal = normal;
+    contact.gap = gap;
+    contact.friction = mu;
+    problem.contacts.push_back(contact);
+  };
+  for (int a = 0; a < n; ++a) {
+    const Vec3 x = problem.bodies[a].position;
+    for (int b = 0; b < a; ++b) {
+      const Vec3 d = x - problem.bodies[b].position;
+      const double distance = d.norm();
+      if (distance < 2.0 * radius + 0.05)
+        add(a, b, x - radius * d / distance, d / distance, distance - 2.0 * radius);
+    }
+    const Vec3 walls[5] = {Vec3::UnitZ(), Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY()};
+    const double gaps[5] = {x.z() - radius, x.x() - radius - low, high_x - x.x() - radius,
+                            x.y() - radius - low, high_y - x.y() - radius};
+    for (int w = 0; w < 5; ++w)
+      if (gaps[w] < 0.05) add(a, kEnvironment, x - radius * walls[w], walls[w], gaps[w]);
+  }
+  return problem;
+}
+
+// Cost of one sweep and of one residual evaluation on the pile (mu = 0.5), mid-solve.
+void BM_PileSweep(benchmark::State &state)
+{
+  SolverOptions options;
+  options.dt = 1e-3;
+  ContactProblem problem = sphere_pile(0.5, options.dt);
+  problem.prepare(options);
+  for (int k = 0; k < 20; ++k) problem.sweep();
+  for (auto _ : state) problem.sweep();
+  state.counters["contacts"] = static_cast<double>(problem.contacts.size());
+  state.counters["ns_per_contact"] = benchmark::Counter(
+      static_cast<double>(problem.contacts.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PileSweep)->Unit(benchmark::kMicrosecond);
+
+void BM_PileResidual(benchmark::State &state)
+{
+  SolverOptions options;
+  options.dt = 1e-3;
+  ContactProblem problem = sphere_pile(0.5, options.dt);
+  problem.prepare(options);
+  for (int k = 0; k < 20; ++k) problem.sweep();
+  for (auto _ : state) benchmark::DoNotOptimize(problem.residual_terms());
+  state.counters["ns_per_contact"] = benchmark::Counter(
+      static_cast<double>(problem.contacts.size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_PileResidual)->Unit(benchmark::kMicrosecond);
+
+// One step of the pile to tolerance 1e-4, warm-started from the converged impulses of a
+// step with 20 % weaker gravity (a load change, ~ the sweeps of a step in a LAMMPS run).
+// Args: check_every.
+void BM_PileWarmSolve(benchmark::State &state)
+{
+  SolverOptions options;
+  options.dt = 1e-3;
+  options.tolerance = 1e-4;
+  options.max_sweeps = 100000;
+  options.check_every = static_cast<int>(state.range(0));
+  ContactProblem original = sphere_pile(0.5, options.dt);
+  {
+    ContactProblem lighter = original;
+    for (SolverBody &body : lighter.bodies) body.external_impulse *= 0.8;
+    SolverOptions tight = options;
+    tight.tolerance = 1e-8;
+    tight.check_every = 1;
+    solve(lighter, tight);
+    for (std::size_t c = 0; c < original.contacts.size(); ++c)
+      original.contacts[c].impulse = lighter.contacts[c].impulse;
+  }
+  ContactProblem problem;
+  SolveReport report;
+  for (auto _ : state) {
+    problem = original;
+    report = solve(problem, options);
+  }
+  state.counters["sweeps"] = report.sweeps;
+  state.counters["residual"] = report.residual;
+  state.counters["contacts"] = static_cast<double>(problem.contacts.size());
+}
+BENCHMARK(BM_PileWarmSolve)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
+
 }    // namespace
 
 BENCHMARK_MAIN();

@@ -34,6 +34,32 @@ Mat3 cross_matrix(const Vec3 &r)
   return m;
 }
 
+// F diag(d) F^T, the translational part of a Delassus block (d: diagonal of M^-1, world
+// frame). For the usual isotropic d it is d 1, without round-off from F F^T.
+Mat3 linear_delassus(const Mat3 &frame, const Vec3 &d)
+{
+  if (d.x() == d.y() && d.y() == d.z()) return d.x() * Mat3::Identity();
+  return frame * d.asDiagonal() * frame.transpose();
+}
+
+// The local problem when the tangential velocity cannot change (W = W_nn e_n e_n^T, a body
+// with locked lateral axes against an immobile one): P_n from u_n = 0, and the friction
+// opposes the given tangential velocity (slip) or is zero (stick with u_t = 0). Exact.
+LocalSolution solve_normal_only(double W_nn, const Vec3 &u_free, double mu)
+{
+  LocalSolution solution;
+  if (u_free[0] >= 0.0) return solution;
+  const double normal = -u_free[0] / W_nn;
+  const double speed = std::hypot(u_free[1], u_free[2]);
+  solution.impulse = Vec3(normal, 0.0, 0.0);
+  if (mu > 0.0 && speed > 0.0) {
+    solution.impulse[1] = -mu * normal * u_free[1] / speed;
+    solution.impulse[2] = -mu * normal * u_free[2] / speed;
+  }
+  solution.regime = mu > 0.0 && speed == 0.0 ? ContactRegime::stick : ContactRegime::slip;
+  return solution;
+}
+
 ContactRegime classify(const Vec3 &P, double mu)
 {
   if (!(P[0] > 0.0)) return ContactRegime::open;
@@ -47,6 +73,12 @@ void validate_body(const SolverBody &body, std::size_t index)
   if (!(body.inv_mass >= 0.0) || !std::isfinite(body.inv_mass))
     throw SolverError(label + ": inverse mass " + std::to_string(body.inv_mass) +
                       " must be finite and >= 0 (0 for a body of infinite mass)");
+  if (!(body.inv_mass_axes.minCoeff() >= 0.0) || !body.inv_mass_axes.allFinite())
+    throw SolverError(label + ": inverse-mass axis factors (" +
+                      std::to_string(body.inv_mass_axes.x()) + ", " +
+                      std::to_string(body.inv_mass_axes.y()) + ", " +
+                      std::to_string(body.inv_mass_axes.z()) +
+                      ") must be finite and >= 0 (1 = free, 0 = locked axis)");
   if (!body.inv_inertia.allFinite() || !body.velocity.allFinite() ||
       !body.angular_velocity.allFinite() || !body.position.allFinite() ||
       !body.external_impulse.allFinite() || !body.external_angular_impulse.allFinite())
@@ -99,6 +131,9 @@ void SolverOptions::validate() const
     throw SolverError("solver tolerance " + std::to_string(tolerance) + " must be > 0");
   if (max_sweeps < 1)
     throw SolverError("max_sweeps = " + std::to_string(max_sweeps) + " must be >= 1");
+  if (check_every < 1)
+    throw SolverError("check_every = " + std::to_string(check_every) +
+                      " must be >= 1 (1 = residual after every sweep)");
 }
 
 void ResidualTerms::merge(const ResidualTerms &other)
@@ -140,7 +175,7 @@ void ContactProblem::prepare(const SolverOptions &options)
     build_row(contacts[c], c, rows_[c]);
   }
   for (SolverBody &body : bodies) {
-    body.velocity += body.inv_mass * body.external_impulse;
+    body.velocity += (body.inv_mass * body.inv_mass_axes).cwiseProduct(body.external_impulse);
     body.angular_velocity += body.inv_inertia * body.external_angular_impulse;
   }
   synced_velocity_.resize(bodies.size());
@@ -162,23 +197,23 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
   row.j = contact.body_j;
   row.mu = contact.friction;
   row.frame = contact_frame(contact.normal.normalized());
-  row.inv_mass_i = body_i.inv_mass;
+  row.inv_mass_i = body_i.inv_mass * body_i.inv_mass_axes;
   row.angular_i = -row.frame * cross_matrix(contact.point - body_i.position);
   row.spin_i = body_i.inv_inertia * row.angular_i.transpose();
-  row.delassus = body_i.inv_mass * Mat3::Identity() + row.angular_i * row.spin_i;
+  row.delassus = linear_delassus(row.frame, row.inv_mass_i) + row.angular_i * row.spin_i;
   Vec3 u_start = row.frame * body_i.velocity + row.angular_i * body_i.angular_velocity;
 
   if (row.j == kEnvironment) {
-    row.inv_mass_j = 0.0;
+    row.inv_mass_j.setZero();
     row.angular_j.setZero();
     row.spin_j.setZero();
     row.offset = -(row.frame * contact.wall_velocity);
   } else {
     const SolverBody &body_j = bodies[row.j];
-    row.inv_mass_j = body_j.inv_mass;
+    row.inv_mass_j = body_j.inv_mass * body_j.inv_mass_axes;
     row.angular_j = -row.frame * cross_matrix(contact.point - body_j.position);
     row.spin_j = body_j.inv_inertia * row.angular_j.transpose();
-    row.delassus += body_j.inv_mass * Mat3::Identity() + row.angular_j * row.spin_j;
+    row.delassus += linear_delassus(row.frame, row.inv_mass_j) + row.angular_j * row.spin_j;
     row.offset.setZero();
     u_start -= row.frame * body_j.velocity + row.angular_j * body_j.angular_velocity;
   }
@@ -186,16 +221,29 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
   // Symmetrise: A B is symmetric in exact arithmetic only.
   row.delassus = 0.5 * (row.delassus + row.delassus.transpose()).eval();
 
-  row.inert = row.delassus.isZero(0.0);
+  // W_nn = 0: no normal impulse can move either body along the normal (both immobile, or
+  // locked axes that carry the reaction themselves): the contact is inert.
+  row.inert = !(row.delassus(0, 0) > 0.0);
+  // Tangential part negligible (both bodies' lateral axes and rotations locked, e.g. a plate
+  // moving along z on a wall): u_t cannot change, solved in closed form (solve_normal_only).
+  row.normal_only = !row.inert && row.delassus.bottomRows<2>().cwiseAbs().maxCoeff() <=
+                                      1e-12 * row.delassus(0, 0);
   row.impulse.setZero();
   row.regime = ContactRegime::open;
-  if (!row.inert) {
+  if (row.normal_only) {
+    const double W_nn = row.delassus(0, 0);
+    row.delassus.setZero();
+    row.delassus(0, 0) = W_nn;
+    row.delassus_inverse.setZero();    // pseudo-inverse, unused
+    row.delassus_inverse(0, 0) = 1.0 / W_nn;
+  } else if (!row.inert) {
     const Eigen::LLT<Mat3> cholesky(row.delassus);
-    if (cholesky.info() != Eigen::Success || !(row.delassus(0, 0) > 0.0))
+    if (cholesky.info() != Eigen::Success)
       throw SolverError(contact_label(index) + " between bodies " + std::to_string(row.i) +
                         " and " + std::to_string(row.j) +
-                        ": the Delassus block is singular (a body of zero inverse mass "
-                        "but free rotation?); give such bodies zero inverse inertia too");
+                        ": the Delassus block is singular (a body of zero inverse mass, or "
+                        "with locked axes, but free rotation?); lock its rotation too (zero "
+                        "inverse inertia)");
     row.delassus_inverse = cholesky.solve(Mat3::Identity());
   }
 
@@ -234,11 +282,11 @@ void ContactProblem::apply_impulse_change(const Row &row, const Vec3 &dP)
 {
   const Vec3 world = row.frame.transpose() * dP;
   SolverBody &body_i = bodies[row.i];
-  body_i.velocity += row.inv_mass_i * world;
+  body_i.velocity += row.inv_mass_i.cwiseProduct(world);
   body_i.angular_velocity += row.spin_i * dP;
   if (row.j != kEnvironment) {
     SolverBody &body_j = bodies[row.j];
-    body_j.velocity -= row.inv_mass_j * world;
+    body_j.velocity -= row.inv_mass_j.cwiseProduct(world);
     body_j.angular_velocity -= row.spin_j * dP;
   }
 }
@@ -248,7 +296,8 @@ void ContactProblem::relax(Row &row)
   if (row.inert) return;
   const Vec3 u_free = local_velocity(row) - row.delassus * row.impulse;
   const LocalSolution local =
-      solve_local_coulomb(row.delassus, row.delassus_inverse, u_free, row.mu);
+      row.normal_only ? solve_normal_only(row.delassus(0, 0), u_free, row.mu)
+                      : solve_local_coulomb(row.delassus, row.delassus_inverse, u_free, row.mu);
   if (!local.exact) ++local_failures_;
   const double omega = options_.relaxation;
   const Vec3 impulse = omega * local.impulse + (1.0 - omega) * row.impulse;
@@ -323,7 +372,10 @@ SolveReport solve(ContactProblem &problem, const SolverOptions &options)
       break;
     }
     if (problem.sweeps_done() >= options.max_sweeps) break;
-    problem.sweep();
+    do {
+      problem.sweep();
+    } while (problem.sweeps_done() % options.check_every != 0 &&
+             problem.sweeps_done() < options.max_sweeps);
   }
   report.sweeps = problem.sweeps_done();
   problem.finish();

@@ -40,6 +40,11 @@ constexpr int kEnvironment = -1;
 // A rigid body as the solver sees it (local owned bodies and ghost copies alike).
 // Bodies of infinite mass (walls, fixed grains) have inv_mass = 0 and inv_inertia = 0;
 // their (prescribed) velocity is never changed by the solver.
+// Locked translation axes (e.g. a loading plate that moves only along z): the inverse mass
+// matrix is inv_mass diag(inv_mass_axes), world frame. A zero factor locks that axis: the
+// velocity component along it is prescribed (kept) and the lock carries the reactions along
+// it. Rotations are locked the same way by zero rows of inv_inertia. All axes locked and
+// inv_inertia = 0 is the same as infinite mass.
 struct SolverBody {
   Vec3 position = Vec3::Zero();            // centre of mass, world frame
   Vec3 velocity = Vec3::Zero();            // in: start of step; after solve: end of step
@@ -49,6 +54,7 @@ struct SolverBody {
   Vec3 external_impulse = Vec3::Zero();
   Vec3 external_angular_impulse = Vec3::Zero();
   double inv_mass = 0.0;
+  Vec3 inv_mass_axes = Vec3::Ones();      // factors of inv_mass per world axis, >= 0 (1 or 0)
   Mat3 inv_inertia = Mat3::Zero();         // world frame, see world_inverse_inertia()
 };
 
@@ -90,6 +96,10 @@ struct SolverOptions {
   std::uint64_t seed = 12345;  // for SweepOrder::shuffled
   double tolerance = 1e-6;     // on the scale-free residual (see ResidualTerms)
   int max_sweeps = 1000;
+  // solve() evaluates the residual (about the cost of a sweep) before the first sweep and
+  // then only every check_every sweeps (and at max_sweeps), so it may do up to
+  // check_every - 1 sweeps more than needed. 1 = check after every sweep.
+  int check_every = 1;
 
   // Throws SolverError naming the bad option.
   void validate() const;
@@ -123,8 +133,9 @@ struct SolveReport {
 
 namespace detail {
 // Data of one contact precomputed by prepare(): local velocity u = F v_i + A_i w_i
-// - (F v_j + A_j w_j) + offset, and an impulse change dP moves v_i by inv_mass_i F^T dP and
-// w_i by B_i dP (opposite for j), with B = I^-1 A^T. W = sum over bodies of inv_mass 1 + A B.
+// - (F v_j + A_j w_j) + offset, and an impulse change dP moves v_i by M_i^-1 F^T dP and
+// w_i by B_i dP (opposite for j), with B = I^-1 A^T and M^-1 = diag(inv_mass_i) (world).
+// W = sum over bodies of F M^-1 F^T + A B.
 struct ContactRow {
   Mat3 frame;             // F: rows n, t1, t2
   Mat3 angular_i, angular_j;              // A = -F [r]x, r = lever arm from the centre
@@ -132,12 +143,13 @@ struct ContactRow {
   Mat3 delassus, delassus_inverse;
   Vec3 offset;            // environment velocity and the Signorini shift (see doc)
   Vec3 impulse;           // local frame
-  double inv_mass_i, inv_mass_j;
+  Vec3 inv_mass_i, inv_mass_j;            // diagonal of M^-1, world frame
   double mu;
   double gap_start;       // gap + (1 - theta) dt u_n^- : predicted gap with u_n^+ = 0
   double normal_shift;    // u_min: Signorini holds for u_n - u_min
   int i, j;               // body indices, j may be kEnvironment
-  bool inert;             // both bodies immobile: nothing to solve
+  bool inert;             // W_nn = 0 (e.g. both bodies immobile): nothing to solve
+  bool normal_only;       // W_nt = W_tt = 0 (locked axes): u_t cannot change
   ContactRegime regime;
 };
 }    // namespace detail
@@ -191,8 +203,8 @@ class ContactProblem {
   long local_failures_ = 0;
 };
 
-// Single-rank driver: prepare, sweep until the residual is below the tolerance (or
-// max_sweeps), finish.
+// Single-rank driver: prepare, sweep until the residual (checked every
+// options.check_every sweeps) is below the tolerance (or max_sweeps), finish.
 SolveReport solve(ContactProblem &problem, const SolverOptions &options);
 
 }    // namespace nscd

@@ -488,3 +488,271 @@ TEST(ContactProblem, ContactBetweenTwoImmobileBodiesIsInert)
   EXPECT_EQ(report.terms.active, 0);
   EXPECT_EQ(problem.contacts[0].impulse, Vec3::Zero());
 }
+
+namespace {
+
+// A loading plate (mass 4, translation locked along x and y, rotation locked) pressed down by
+// an external force onto three spheres (mass 2, radius 0.5) that rest on the floor z = 0.
+struct PlateOnSpheres {
+  static constexpr double plate_mass = 4.0, push = 30.0, half_thickness = 0.1;
+  std::vector<Sphere> spheres;
+  Vec3 plate_position = Vec3(0.0, 0.0, 1.0 + half_thickness);
+  Vec3 plate_velocity = Vec3::Zero();
+  Vec3 plate_angular_velocity = Vec3::Zero();
+  Vec3 plate_side_force = Vec3(7.0, -3.0, 0.0);    // carried by the locks
+  double plate_friction = 0.5, floor_friction = 0.5;
+  WarmStartCache cache;
+
+  PlateOnSpheres()
+  {
+    for (const double x : {-1.2, 0.0, 1.2}) {
+      Sphere sphere;
+      sphere.pose.position = Vec3(x, 0.3 * x, 0.5);
+      spheres.push_back(sphere);
+    }
+  }
+  int plate_index() const { return static_cast<int>(spheres.size()); }
+
+  void build(ContactProblem &problem, double dt) const
+  {
+    problem.bodies.clear();
+    problem.contacts.clear();
+    const Vec3 gravity(0.0, 0.0, -kGravity);
+    for (const Sphere &sphere : spheres) problem.bodies.push_back(solver_body(sphere, gravity, dt));
+    SolverBody plate;
+    plate.position = plate_position;
+    plate.velocity = plate_velocity;
+    plate.angular_velocity = plate_angular_velocity;
+    plate.inv_mass = 1.0 / plate_mass;
+    plate.inv_mass_axes = Vec3(0.0, 0.0, 1.0);
+    plate.external_impulse = dt * (plate_mass * gravity + Vec3(0.0, 0.0, -push) + plate_side_force);
+    plate.external_angular_impulse = dt * Vec3(1.0, 2.0, 3.0);    // locked: ignored
+    problem.bodies.push_back(plate);
+    for (int s = 0; s < plate_index(); ++s) {
+      const Vec3 centre = spheres[s].pose.position;
+      Contact floor;
+      floor.body_i = s;
+      floor.point = Vec3(centre.x(), centre.y(), 0.0);
+      floor.gap = centre.z() - 0.5;
+      floor.friction = floor_friction;
+      floor.key = {s, -1, 0};
+      problem.contacts.push_back(floor);
+      Contact top;
+      top.body_i = s;
+      top.body_j = plate_index();
+      top.point = Vec3(centre.x(), centre.y(), centre.z() + 0.5);
+      top.normal = -Vec3::UnitZ();
+      top.gap = plate_position.z() - half_thickness - (centre.z() + 0.5);
+      top.friction = plate_friction;
+      top.key = {s, plate_index(), 0};
+      problem.contacts.push_back(top);
+    }
+  }
+
+  SolveReport step(ContactProblem &problem, const SolverOptions &options)
+  {
+    build(problem, options.dt);
+    cache.apply(problem.contacts);
+    const SolveReport report = solve(problem, options);
+    cache.store(problem.contacts);
+    for (int s = 0; s < plate_index(); ++s) {
+      Sphere &sphere = spheres[s];
+      const SolverBody &body = problem.bodies[s];
+      advance_pose(sphere.pose, sphere.velocity, sphere.angular_velocity, body.velocity,
+                   body.angular_velocity, options.dt, options.theta);
+      sphere.velocity = body.velocity;
+      sphere.angular_velocity = body.angular_velocity;
+    }
+    const SolverBody &body = problem.bodies[plate_index()];
+    plate_position += options.dt * ((1.0 - options.theta) * plate_velocity + options.theta * body.velocity);
+    plate_velocity = body.velocity;
+    plate_angular_velocity = body.angular_velocity;
+    return report;
+  }
+};
+
+}    // namespace
+
+TEST(ContactProblem, PlateWithLockedLateralAxesIsCarriedByTheGrains)
+{
+  PlateOnSpheres scene;
+  const SolverOptions options = tight_options();
+  ContactProblem problem;
+  for (int step = 0; step < 200; ++step) {
+    const SolveReport report = scene.step(problem, options);
+    ASSERT_TRUE(report.converged) << "step " << step;
+    EXPECT_EQ(report.terms.local_failures, 0);
+    // Locked axes and rotation are never touched, whatever the contacts or external loads do.
+    EXPECT_EQ(scene.plate_velocity.x(), 0.0);
+    EXPECT_EQ(scene.plate_velocity.y(), 0.0);
+    EXPECT_EQ(scene.plate_angular_velocity, Vec3::Zero());
+    // The plate is at rest on the grains: the grains carry (F + m g) dt ...
+    double on_plate = 0.0, on_floor = 0.0;
+    for (const Contact &contact : problem.contacts)
+      (contact.body_j == kEnvironment ? on_floor : on_plate) += contact.impulse.z();
+    const double load = (PlateOnSpheres::push + PlateOnSpheres::plate_mass * kGravity) * options.dt;
+    EXPECT_NEAR(-on_plate, load, 1e-9 * load) << "step " << step;
+    // ... and the floor that plus the grains' weight.
+    const double total = load + 3 * 2.0 * kGravity * options.dt;
+    EXPECT_NEAR(on_floor, total, 1e-9 * total) << "step " << step;
+  }
+  EXPECT_NEAR(scene.plate_position.z(), 1.1, 1e-12);
+  EXPECT_EQ(scene.plate_position.x(), 0.0);
+  for (const Sphere &sphere : scene.spheres) EXPECT_LT(sphere.velocity.norm(), 1e-10);
+}
+
+TEST(ContactProblem, GrainSlidingUnderALockedPlateDoesNotMoveItSideways)
+{
+  PlateOnSpheres scene;
+  scene.spheres.resize(1);
+  scene.spheres[0].velocity = Vec3(0.8, -0.4, 0.0);
+  scene.spheres[0].angular_velocity = Vec3(0.0, 0.0, 5.0);
+  scene.plate_side_force.setZero();
+  scene.floor_friction = 0.0;    // only the plate brakes the grain
+  const SolverOptions options = tight_options();
+  ContactProblem problem;
+  const double speed_before = scene.spheres[0].velocity.norm();
+  for (int step = 0; step < 20; ++step) {
+    const SolveReport report = scene.step(problem, options);
+    ASSERT_TRUE(report.converged) << "step " << step;
+    EXPECT_EQ(scene.plate_velocity.x(), 0.0);
+    EXPECT_EQ(scene.plate_velocity.y(), 0.0);
+    EXPECT_EQ(scene.plate_angular_velocity, Vec3::Zero());
+    // Contact 1: sphere below the plate. While the sphere slips the plate brakes it with
+    // the full Coulomb force (it rolls without slip after ~10 steps, then P_t = 0).
+    const Contact &top = problem.contacts[1];
+    if (step == 0) {
+      EXPECT_EQ(top.regime, ContactRegime::slip);
+    }
+    if (top.regime == ContactRegime::slip) {
+      EXPECT_NEAR(top.impulse.head<2>().norm(), scene.plate_friction * -top.impulse.z(),
+                  1e-9 * -top.impulse.z());
+    }
+  }
+  // Then it rolls on the floor under the laterally fixed plate: its top point is at rest,
+  // and the friction impulse P that achieved it gives v = v0 - P/m with
+  // v0 = P (1/m + r^2/I) (m = 2, r = 0.5, I = 0.2): v = 5/7 v0.
+  EXPECT_EQ(problem.contacts[1].regime, ContactRegime::stick);
+  const Vec3 rolling = 5.0 / 7.0 * Vec3(0.8, -0.4, 0.0);
+  EXPECT_LT((scene.spheres[0].velocity - rolling).norm(), 1e-9 * speed_before);
+  EXPECT_EQ(scene.plate_position.x(), 0.0);
+  EXPECT_EQ(scene.plate_position.y(), 0.0);
+}
+
+TEST(ContactProblem, LockedPlateOnAMovingFloorSlidesOnlyAlongItsFreeAxis)
+{
+  // Plate body 0 (locked x, y and rotation) falls onto a floor moving sideways: W has only a
+  // normal part (normal_only contact), the plate stops and gets the full sliding friction.
+  const double dt = 1e-3, mass = 3.0, mu = 0.4;
+  ContactProblem problem;
+  SolverBody plate;
+  plate.position = Vec3(0.0, 0.0, 0.1);
+  plate.velocity = Vec3(0.0, 0.0, -2.0);
+  plate.inv_mass = 1.0 / mass;
+  plate.inv_mass_axes = Vec3(0.0, 0.0, 1.0);
+  plate.external_impulse = dt * mass * Vec3(0.0, 0.0, -kGravity);
+  problem.bodies.push_back(plate);
+  for (const double x : {-0.5, 0.5}) {
+    Contact contact;
+    contact.point = Vec3(x, 0.2, 0.0);
+    contact.friction = mu;
+    contact.wall_velocity = Vec3(1.0, 0.0, 0.0);
+    problem.contacts.push_back(contact);
+  }
+  const SolveReport report = solve(problem, tight_options(dt));
+  ASSERT_TRUE(report.converged);
+  EXPECT_GE(report.terms.sliding, 1);
+  EXPECT_EQ(report.terms.sticking, 0);
+  EXPECT_EQ(problem.bodies[0].velocity.x(), 0.0);
+  EXPECT_EQ(problem.bodies[0].velocity.y(), 0.0);
+  EXPECT_NEAR(problem.bodies[0].velocity.z(), 0.0, 1e-12);
+  Vec3 total = Vec3::Zero();
+  for (const Contact &contact : problem.contacts) total += contact.impulse;
+  const double normal = mass * (2.0 + kGravity * dt);
+  EXPECT_NEAR(total.z(), normal, 1e-12 * normal);
+  EXPECT_NEAR(total.x(), mu * normal, 1e-12 * normal);    // the floor drags along +x
+  EXPECT_NEAR(total.y(), 0.0, 1e-15);
+}
+
+TEST(ContactProblem, BodyWithAllAxesLockedActsAsInfiniteMass)
+{
+  // A sphere hits body 1, once of infinite mass, once with finite mass and all axes locked.
+  auto run = [](bool locked) {
+    ContactProblem problem;
+    Sphere sphere;
+    sphere.pose.position = Vec3(0.1, 0.0, 1.5);
+    sphere.velocity = Vec3(0.3, 0.0, -1.0);
+    problem.bodies.push_back(solver_body(sphere, Vec3(0.0, 0.0, -kGravity), 1e-3));
+    SolverBody block;
+    block.position = Vec3(0.0, 0.0, 0.5);
+    block.velocity = Vec3(0.0, 0.0, 0.2);    // prescribed
+    if (locked) {
+      block.inv_mass = 0.5;
+      block.inv_mass_axes = Vec3::Zero();
+      block.external_impulse = Vec3(1.0, 2.0, 3.0);
+    }
+    problem.bodies.push_back(block);
+    Contact contact;
+    contact.body_i = 0;
+    contact.body_j = 1;
+    contact.point = Vec3(0.1, 0.0, 1.0);
+    contact.friction = 0.3;
+    contact.restitution = 0.5;
+    problem.contacts.push_back(contact);
+    Contact floor;    // block on the floor: inert
+    floor.body_i = 1;
+    floor.gap = -1e-3;
+    problem.contacts.push_back(floor);
+    const SolveReport report = solve(problem, tight_options());
+    EXPECT_TRUE(report.converged);
+    return problem;
+  };
+  const ContactProblem infinite = run(false), locked = run(true);
+  EXPECT_EQ(locked.bodies[1].velocity, Vec3(0.0, 0.0, 0.2));
+  EXPECT_EQ(locked.bodies[1].angular_velocity, Vec3::Zero());
+  EXPECT_EQ(locked.contacts[1].impulse, Vec3::Zero());
+  EXPECT_EQ(locked.contacts[0].impulse, infinite.contacts[0].impulse);
+  EXPECT_EQ(locked.bodies[0].velocity, infinite.bodies[0].velocity);
+  EXPECT_EQ(locked.bodies[0].angular_velocity, infinite.bodies[0].angular_velocity);
+  EXPECT_GT(locked.contacts[0].impulse.z(), 0.0);
+}
+
+TEST(ContactProblem, NegativeAxisFactorIsRejected)
+{
+  ContactProblem problem;
+  problem.bodies.resize(1);
+  problem.bodies[0].inv_mass = 1.0;
+  problem.bodies[0].inv_mass_axes = Vec3(1.0, -1.0, 1.0);
+  SolverOptions options = tight_options();
+  EXPECT_THROW(problem.prepare(options), SolverError);
+  problem.bodies[0].inv_mass_axes = Vec3::Ones();
+  options.check_every = 0;
+  EXPECT_THROW(problem.prepare(options), SolverError);
+}
+
+TEST(ContactProblem, CheckEverySweepsGivesTheSameAnswerWithFewerResiduals)
+{
+  BoxColumn column;
+  column.floor_friction = column.box_friction = 0.5;
+  column.stack({1.0, 1.0, 1.0}, Vec3(0.5, 0.5, 0.5));
+  column.warm_start = false;
+  SolverOptions options = tight_options();
+  options.tolerance = 1e-8;
+  ContactProblem every, sparse;
+  const SolveReport each = column.step(every, options);
+  column.stack({1.0, 1.0, 1.0}, Vec3(0.5, 0.5, 0.5));
+  options.check_every = 7;
+  const SolveReport seventh = column.step(sparse, options);
+  ASSERT_TRUE(each.converged);
+  ASSERT_TRUE(seventh.converged);
+  EXPECT_EQ(seventh.sweeps % 7, 0);
+  EXPECT_GE(seventh.sweeps, each.sweeps);
+  EXPECT_LT(seventh.sweeps, each.sweeps + 7);
+  for (int level = 0; level < 3; ++level)
+    EXPECT_NEAR(impulse_on(sparse, level).z(), impulse_on(every, level).z(),
+                1e-6 * impulse_on(every, level).z());
+  // max_sweeps is honoured even when it is not a multiple of check_every.
+  options.max_sweeps = 10;
+  column.stack({1.0, 1.0, 1.0}, Vec3(0.5, 0.5, 0.5));
+  EXPECT_EQ(column.step(sparse, options).sweeps, 10);
+}
