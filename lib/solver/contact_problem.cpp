@@ -63,7 +63,8 @@ LocalSolution solve_normal_only(double W_nn, const Vec3 &u_free, double mu)
 ContactRegime classify(const Vec3 &P, double mu)
 {
   if (!(P[0] > 0.0)) return ContactRegime::open;
-  if (mu > 0.0 && std::hypot(P[1], P[2]) < (1.0 - 1e-9) * mu * P[0]) return ContactRegime::stick;
+  if (mu > 0.0 && std::sqrt(P[1] * P[1] + P[2] * P[2]) < (1.0 - 1e-9) * mu * P[0])
+    return ContactRegime::stick;
   return ContactRegime::slip;
 }
 
