@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -19,8 +20,8 @@ const char *const kLibraryArg = "library";    // followed by the serialised shap
 }    // namespace
 
 AtomVecSpheropolyhedron::AtomVecSpheropolyhedron(LAMMPS *lmp) :
-    AtomVec(lmp), shape(nullptr), quat(nullptr), inertia(nullptr), radius(nullptr),
-    rmass(nullptr), omega(nullptr), torque(nullptr)
+    AtomVec(lmp), own(fields_storage()), shape(own.shape), quat(own.quat), inertia(own.inertia),
+    radius(nullptr), rmass(nullptr), omega(nullptr), torque(nullptr)
 {
   mass_type = PER_ATOM;
   molecular = Atom::ATOMIC;
@@ -46,11 +47,13 @@ AtomVecSpheropolyhedron::AtomVecSpheropolyhedron(LAMMPS *lmp) :
   fields_data_vel = (char *) "id v omega";
 }
 
-AtomVecSpheropolyhedron::~AtomVecSpheropolyhedron()
+/* A new block per instance, kept until the program ends (a few bytes per atom_style
+   command); ~AtomVec frees the arrays themselves. */
+AtomVecSpheropolyhedron::OwnFields &AtomVecSpheropolyhedron::fields_storage()
 {
-  memory->destroy(shape);
-  memory->destroy(quat);
-  memory->destroy(inertia);
+  static std::vector<std::unique_ptr<OwnFields>> blocks;
+  blocks.push_back(std::make_unique<OwnFields>());
+  return *blocks.back();
 }
 
 /* Registers one of this style's own per-atom arrays with Atom. `atom_style` followed by
@@ -197,4 +200,30 @@ nscd::Pose AtomVecSpheropolyhedron::pose(int i) const
   p.position = nscd::Vec3(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
   p.orientation = nscd::Quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
   return p;
+}
+
+/* Per-atom values for compute property/atom and dump custom: shape, qw qx qy qz,
+   inertia1 inertia2 inertia3 (names distinct from the ellipsoid/body ones). */
+namespace {
+const char *const kProperties[] = {"shape", "qw", "qx", "qy", "qz", "inertia1", "inertia2", "inertia3"};
+}
+
+int AtomVecSpheropolyhedron::property_atom(char *name)
+{
+  for (int k = 0; k < 8; k++)
+    if (strcmp(name, kProperties[k]) == 0) return k;
+  return -1;
+}
+
+void AtomVecSpheropolyhedron::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
+{
+  for (int i = 0, n = 0; i < atom->nlocal; i++, n += nvalues) {
+    if (!(atom->mask[i] & groupbit)) {
+      buf[n] = 0.0;
+      continue;
+    }
+    if (index == 0) buf[n] = shape[i];
+    else if (index <= 4) buf[n] = quat[i][index - 1];
+    else buf[n] = inertia[i][index - 5];
+  }
 }

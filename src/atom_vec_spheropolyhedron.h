@@ -26,12 +26,13 @@ namespace LAMMPS_NS {
 class AtomVecSpheropolyhedron : public AtomVec {
  public:
   AtomVecSpheropolyhedron(class LAMMPS *);
-  ~AtomVecSpheropolyhedron() override;
   void process_args(int, char **) override;
 
   void grow_pointers() override;
   void create_atom_post(int) override;
   void data_atom_post(int) override;
+  int property_atom(char *) override;
+  void pack_property_atom(int, double *, int, int) override;
 
   // The atom style instance of this run (also inside atom_style hybrid), or an error
   // naming the missing `atom_style spheropolyhedron` when there is none.
@@ -48,9 +49,19 @@ class AtomVecSpheropolyhedron : public AtomVec {
   // Gives atom i shape `shape_id` (0 = point) with the given mass; sets inertia and radius.
   void set_shape(int i, int shape_id, double mass);
 
-  int *shape;           // shape id, 1..N; 0 = point mass (no shape)
-  double **quat;        // orientation, body -> world, (w, x, y, z)
-  double **inertia;     // principal moments of inertia, body frame
+  // This style's own per-atom arrays. Atom's registry points at these pointers; they live
+  // in a block that outlives this object (see fields_storage()), because the generic
+  // ~AtomVec of an enclosing atom_style hybrid frees the arrays through them after this
+  // sub-style has been deleted.
+  struct OwnFields {
+    int *shape = nullptr;
+    double **quat = nullptr;
+    double **inertia = nullptr;
+  };
+  OwnFields &own;
+  int *&shape;           // shape id, 1..N; 0 = point mass (no shape)
+  double **&quat;        // orientation, body -> world, (w, x, y, z)
+  double **&inertia;     // principal moments of inertia, body frame
   double *radius;       // bounding radius (centre of mass to farthest surface point)
   double *rmass;
   double **omega;       // angular velocity, world frame
@@ -59,6 +70,7 @@ class AtomVecSpheropolyhedron : public AtomVec {
  private:
   nscd::ShapeLibrary library;
 
+  static OwnFields &fields_storage();
   void point_peratom(const char *name, void *address, int datatype, int cols, int threadflag = 0);
   void record_library_in_style_args();
   void check_shape_id(int i) const;

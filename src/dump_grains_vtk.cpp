@@ -21,7 +21,7 @@ enum Column { ID, TYPE, SHAPE, X, Y, Z, QW, QX, QY, QZ, VX, VY, VZ, NCOLUMNS };
 
 // Directions on the unit sphere (icosahedron vertices plus edge midpoints, 42 in all):
 // enough to show spheres and spherocylinder caps as round.
-std::vector<nscd::Vec3> sphere_directions()
+std::vector<nscd::Vec3> make_sphere_directions()
 {
   const double g = (1.0 + std::sqrt(5.0)) / 2.0;
   std::vector<nscd::Vec3> ico;
@@ -62,6 +62,9 @@ void DumpGrainsVTK::init_style()
   if (multiproc)
     error->all(FLERR, "dump grains/vtk writes one file per snapshot from rank 0: remove "
                "dump_modify nfile/fileper");
+  if (!write_header_flag)
+    error->all(FLERR, "dump grains/vtk needs its header (point and polygon counts): remove "
+               "dump_modify header no");
 }
 
 void DumpGrainsVTK::write_header(bigint nrows)
@@ -69,7 +72,7 @@ void DumpGrainsVTK::write_header(bigint nrows)
   expected_rows = nrows;
   timestep_of_snapshot = update->ntimestep;
   snapshot.clear();
-  if (nrows == 0) write_file();
+  written = false;
 }
 
 void DumpGrainsVTK::pack(tagint *ids)
@@ -89,8 +92,12 @@ void DumpGrainsVTK::pack(tagint *ids)
 
 void DumpGrainsVTK::write_data(int nrows, double *rows)
 {
+  // Called once per rank's chunk (even empty ones): write when the last row has arrived.
   snapshot.insert(snapshot.end(), rows, rows + (size_t) nrows * NCOLUMNS);
-  if ((bigint) (snapshot.size() / NCOLUMNS) == expected_rows) write_file();
+  if (!written && (bigint) (snapshot.size() / NCOLUMNS) == expected_rows) {
+    write_file();
+    written = true;
+  }
 }
 
 /* Polyhedral cores are drawn as their faces; shapes with no faces (spheres, spherocylinders)
@@ -106,9 +113,10 @@ const DumpGrainsVTK::Mesh &DumpGrainsVTK::mesh_of(int shape_id)
   const nscd::Spheropolyhedron *surface = &shape;
   nscd::Spheropolyhedron rounded;
   if (!shape.is_polyhedron()) {
+    static const std::vector<nscd::Vec3> directions = make_sphere_directions();
     std::vector<nscd::Vec3> points;
     for (const nscd::Vec3 &v : shape.vertices)
-      for (const nscd::Vec3 &d : sphere_directions()) points.push_back(v + shape.radius * d);
+      for (const nscd::Vec3 &d : directions) points.push_back(v + shape.radius * d);
     rounded = nscd::make_spheropolyhedron(points, 0.0);
     for (nscd::Vec3 &v : rounded.vertices) v = rounded.input_rotation * v + rounded.input_centroid;
     surface = &rounded;

@@ -38,6 +38,7 @@ class DumpGrainsVTK : public Dump {
   std::vector<double> snapshot;        // rows gathered on the writing rank
   bigint expected_rows = 0;
   bigint timestep_of_snapshot = 0;
+  bool written = false;                // this snapshot's file is complete
 
   const Mesh &mesh_of(int shape_id);
   void write_file();

@@ -9,7 +9,10 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "memory.h"
+#include "domain.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "nscd_boundary.h"
 #include "pair_nscd.h"
 #include "update.h"
@@ -46,7 +49,7 @@ struct StoredContact {
 };
 }    // namespace
 
-/* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W]
+/* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
@@ -58,7 +61,15 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
   extvector = 0;
   comm_forward = 12;
   comm_reverse = 6;
+  // The contact forces are known only after the solve: their virial is this fix's.
+  virial_global_flag = virial_peratom_flag = 1;
+  thermo_virial = 1;
 
+  // Defaults (doc/fix_nscd.md): theta = 1 lets no impact sink into an obstacle (with
+  // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
+  // is checked every 4 sweeps (it costs about a sweep).
+  options.theta = 1.0;
+  options.check_every = 4;
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
@@ -69,6 +80,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
     else if (key == "relaxation") options.relaxation = utils::numeric(FLERR, value, false, lmp);
     else if (key == "seed") options.seed = (std::uint64_t) utils::bnumeric(FLERR, value, false, lmp);
     else if (key == "exchange") exchange_every = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "check") options.check_every = utils::inumeric(FLERR, value, false, lmp);
     else if (key == "warn") warn_every = utils::inumeric(FLERR, value, false, lmp);
     else if (key == "order") {
       const std::string order = value;
@@ -80,7 +92,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
                    "forward_backward)", order);
     } else {
       error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
-                 "relaxation, order, seed, exchange, warn)", key);
+                 "relaxation, check, order, seed, exchange, warn)", key);
     }
   }
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
@@ -95,7 +107,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 
 int FixNSCD::setmask()
 {
-  return FINAL_INTEGRATE;
+  return POST_FORCE | FINAL_INTEGRATE;
 }
 
 void FixNSCD::init()
@@ -105,17 +117,55 @@ void FixNSCD::init()
   if (!pair)
     error->all(FLERR, "fix nscd needs pair_style nscd (it finds the grain contacts); add "
                "'pair_style nscd' and 'pair_coeff * * FRICTION'");
+  if (!pair->compute_flag)
+    error->all(FLERR, "fix nscd: pair_modify compute no switches off contact detection; remove it");
+  for (int f = 0; f < modify->nfix; f++)
+    if (modify->fix[f] != this && dynamic_cast<FixNSCD *>(modify->fix[f]))
+      error->all(FLERR, "fix nscd: only one fix nscd may be defined ({} and {}); one solver "
+                 "handles all grains and boundaries", modify->fix[f]->id, id);
+  if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
   dt = update->dt;
   find_partners();
+  check_no_points_in_group();
+  check_grains_are_consistent();
+}
 
-  // Every atom of the group must be a grain: points (wire nodes) belong to the wire fix.
+/* Every atom of the group must be a grain: points (wire nodes) belong to the wire fix.
+   Also catches points made during a run (fix pour/deposit create shape 0). */
+void FixNSCD::check_no_points_in_group()
+{
   tagint first_point = MAXTAGINT, any_point;
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && avec->shape[i] == 0) first_point = std::min(first_point, atom->tag[i]);
   MPI_Allreduce(&first_point, &any_point, 1, MPI_LMP_TAGINT, MPI_MIN, world);
   if (any_point != MAXTAGINT)
     error->all(FLERR, "fix nscd: atom ID {} in group '{}' is a point (shape 0), not a grain; "
-               "use a group of grains only", any_point, group->names[igroup]);
+               "give it a shape ('shapes assign') or use a group of grains only", any_point,
+               group->names[igroup]);
+}
+
+/* Core commands can change mass or radius behind the shape library's back (`set mass`,
+   `set diameter`, `set density`): refuse grains whose data no longer match their shape. */
+void FixNSCD::check_grains_are_consistent()
+{
+  tagint first_bad = MAXTAGINT, any_bad;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    const nscd::Spheropolyhedron &s = avec->shape_of(i);
+    const double density = avec->rmass[i] / s.volume;
+    bool ok = std::abs(avec->radius[i] - s.bounding_radius) <= 1e-12 * s.bounding_radius;
+    for (int k = 0; k < 3; k++)
+      ok = ok && std::abs(avec->inertia[i][k] - density * s.principal_inertia[k]) <=
+              1e-10 * density * s.principal_inertia.maxCoeff();
+    if (!ok) first_bad = std::min(first_bad, atom->tag[i]);
+  }
+  MPI_Allreduce(&first_bad, &any_bad, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any_bad != MAXTAGINT)
+    error->all(FLERR, "fix nscd: grain ID {} has a mass, inertia or radius that does not match "
+               "its shape (changed by 'set'?); set mass and shape with 'shapes assign ... "
+               "density|mass'", any_bad);
 }
 
 void FixNSCD::find_partners()
@@ -125,14 +175,27 @@ void FixNSCD::find_partners()
     if (auto *b = dynamic_cast<NSCDBoundary *>(modify->fix[f])) boundaries.push_back(b);
 }
 
-void FixNSCD::setup(int /*vflag*/)
+/* A run can start without init() (run ... pre no): partners may have changed. The contact
+   virial of the setup step is zero: nothing is solved before the first step. */
+void FixNSCD::setup(int vflag)
 {
+  find_partners();
+  post_force(vflag);
   measure_kinetic_energy();
 }
 
-void FixNSCD::reset_dt()
+void FixNSCD::post_force(int vflag)
 {
-  dt = update->dt;
+  v_init(vflag);
+  if (!vflag_atom) return;
+  // Fix::v_setup sizes and zeroes vatom for owned atoms; contacts also tally into ghosts.
+  if (atom->nmax > maxvatom) {
+    maxvatom = atom->nmax;
+    memory->destroy(vatom);
+    memory->create(vatom, maxvatom, 6, "nscd:vatom");
+  }
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+    for (int k = 0; k < 6; k++) vatom[i][k] = 0.0;
 }
 
 /* One Moreau-Jean step: contacts at the current positions (found in this step's force
@@ -140,6 +203,7 @@ void FixNSCD::reset_dt()
 void FixNSCD::final_integrate()
 {
   dt = update->dt;
+  if (neighbor->ago == 0) check_no_points_in_group();
   exchange_mode = Exchange::state;
   comm->forward_comm_fix(this, 12);
   build_bodies();
@@ -150,6 +214,7 @@ void FixNSCD::final_integrate()
   warm_start.store(problem.contacts);
   warn_if_unconverged();
   measure_kinetic_energy();
+  warn_if_contacts_can_be_missed();
 }
 
 void FixNSCD::build_bodies()
@@ -173,7 +238,11 @@ void FixNSCD::build_bodies()
     const nscd::Vec3 moments = vec3(avec->inertia[b]);
     const nscd::Quat q = quat_of(avec->quat[b]);
     body.inv_mass = 1.0 / avec->rmass[b];
-    body.inv_inertia = nscd::world_inverse_inertia(moments, q);
+    try {
+      body.inv_inertia = nscd::world_inverse_inertia(moments, q);
+    } catch (std::exception &e) {
+      error->one(FLERR, "fix nscd: grain ID {}: {}", atom->tag[b], e.what());
+    }
     body.external_impulse = dt * vec3(f[b]);
     body.external_angular_impulse =
         dt * (vec3(avec->torque[b]) + nscd::gyroscopic_torque(moments, q, body.angular_velocity));
@@ -194,6 +263,21 @@ void FixNSCD::gather_contacts()
     restored_contacts.clear();
   }
   warm_start.apply(problem.contacts);
+  // Impulses scale with the step: after a `timestep` change, start from the same forces.
+  if (warm_start_dt > 0.0 && warm_start_dt != dt)
+    for (nscd::Contact &c : problem.contacts) c.impulse *= dt / warm_start_dt;
+  warm_start_dt = dt;
+}
+
+int FixNSCD::boundary_of(size_t contact) const
+{
+  size_t first = pair->contacts().size();
+  if (contact < first) return 0;
+  for (size_t k = 0; k < boundary_counts.size(); k++) {
+    first += boundary_counts[k];
+    if (contact < first) return (int) k + 1;
+  }
+  return 0;
 }
 
 /* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of
@@ -204,8 +288,10 @@ void FixNSCD::solve()
   options.dt = dt;
   try {
     problem.prepare(options);
-  } catch (std::exception &e) {
-    error->one(FLERR, "fix nscd: {}", e.what());
+  } catch (std::exception &e) {    // the solver names local indices; say which grains
+    const nscd::Contact &first = problem.contacts.empty() ? nscd::Contact() : problem.contacts[0];
+    error->one(FLERR, "fix nscd: bad contact problem ({}); grains of the first contact: IDs {} "
+               "and {}", e.what(), first.key.tag_i, first.key.tag_j);
   }
   exchange_velocities();
   report = nscd::SolveReport();
@@ -214,8 +300,10 @@ void FixNSCD::solve()
   while (report.residual > options.tolerance && report.sweeps < options.max_sweeps) {
     problem.sweep();
     report.sweeps++;
-    if (report.sweeps % exchange_every != 0 && report.sweeps < options.max_sweeps) continue;
-    exchange_velocities();
+    const bool last = report.sweeps == options.max_sweeps;
+    const bool check = last || report.sweeps % options.check_every == 0;
+    if (check || report.sweeps % exchange_every == 0) exchange_velocities();
+    if (!check) continue;    // a residual costs about as much as a sweep
     report.terms = global_terms();
     report.residual = report.terms.residual();
   }
@@ -256,7 +344,7 @@ void FixNSCD::move_grains()
 {
   double **x = atom->x, **v = atom->v;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
     const nscd::SolverBody &body = problem.bodies[i];
     nscd::Pose pose;
     pose.position = vec3(x[i]);
@@ -274,21 +362,40 @@ void FixNSCD::move_grains()
   for (NSCDBoundary *b : boundaries) b->advance(dt);
 }
 
-/* Solved impulses / dt are the contact forces of the step: virial for pair nscd, reactions
-   for the boundaries. */
+/* Solved impulses / dt are the contact forces of the step: their virial (this fix's, for
+   pressure and compute stress/atom) and the boundaries' reactions. */
 void FixNSCD::hand_back_forces()
 {
   const std::vector<nscd::Contact> &c = problem.contacts;
-  const size_t ngrain = pair->contacts().size();
-  for (size_t k = 0; k < ngrain; k++) {
-    const double force[3] = {c[k].impulse.x() / dt, c[k].impulse.y() / dt, c[k].impulse.z() / dt};
-    pair->tally_contact_force(c[k].body_i, c[k].body_j, force);
+  if (vflag_either) {
+    for (const nscd::Contact &contact : c)
+      tally_virial(contact.body_i, contact.body_j, contact.point, contact.impulse / dt);
+    if (vflag_atom) {    // ghosts' shares go to their owners
+      exchange_mode = Exchange::virial;
+      comm->reverse_comm_fix(this, 6);
+    }
   }
-  size_t first = ngrain;
+  size_t first = pair->contacts().size();
   for (size_t k = 0; k < boundaries.size(); k++) {
     boundaries[k]->take_impulses(c.data() + first, boundary_counts[k], dt);
     first += boundary_counts[k];
   }
+}
+
+/* Grain pair: (x_i - x_j) (x) F, half to each grain. Boundary: (x_i - contact point) (x) F,
+   all to the grain, as LAMMPS' wall fixes do. */
+void FixNSCD::tally_virial(int i, int j, const nscd::Vec3 &point, const nscd::Vec3 &f)
+{
+  const nscd::Vec3 d = vec3(atom->x[i]) - (j >= 0 ? vec3(atom->x[j]) : point);
+  const double v[6] = {d.x() * f.x(), d.y() * f.y(), d.z() * f.z(),
+                       d.x() * f.y(), d.x() * f.z(), d.y() * f.z()};
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += v[k];
+  if (!vflag_atom) return;
+  const double share = j >= 0 ? 0.5 : 1.0;
+  for (int k = 0; k < 6; k++) vatom[i][k] += share * v[k];
+  if (j >= 0)
+    for (int k = 0; k < 6; k++) vatom[j][k] += share * v[k];
 }
 
 void FixNSCD::warn_if_unconverged()
@@ -303,6 +410,28 @@ void FixNSCD::warn_if_unconverged()
                    "after {} sweeps ({} unconverged steps so far); raise max_sweeps, lower the "
                    "timestep, or check the scene", step, report.residual, options.tolerance,
                    report.sweeps, unconverged_steps);
+}
+
+/* Contacts are found at the start of a step for gaps below the activation distance. Two
+   grains closing faster than that per step can meet unseen and overlap: say so. */
+void FixNSCD::warn_if_contacts_can_be_missed()
+{
+  double mine = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && avec->shape[i] != 0)
+      mine = std::max(mine, vec3(atom->v[i]).norm() + vec3(avec->omega[i]).norm() * avec->radius[i]);
+  MPI_Allreduce(&mine, &max_step_travel, 1, MPI_DOUBLE, MPI_MAX, world);
+  max_step_travel *= 2.0 * dt;    // two grains approaching each other
+  const double activation = pair->activation_distance();
+  if (max_step_travel <= activation) return;
+  const bigint step = update->ntimestep;
+  if (last_speed_warning_step >= 0 && step - last_speed_warning_step < warn_every) return;
+  last_speed_warning_step = step;
+  if (comm->me == 0)
+    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step, more than "
+                   "the contact activation distance {:.3g}; contacts can be found late (overlap). "
+                   "Lower the timestep or raise 'pair_style nscd activation'", step,
+                   max_step_travel, activation);
 }
 
 void FixNSCD::measure_kinetic_energy()
@@ -376,6 +505,14 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
 int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (exchange_mode == Exchange::virial) {
+    for (int i = first; i < first + n; i++)
+      for (int k = 0; k < 6; k++) {
+        buf[m++] = vatom[i][k];
+        vatom[i][k] = 0.0;
+      }
+    return m;
+  }
   for (int i = first; i < first + n; i++) {
     const nscd::Vec3 dv = problem.velocity_correction(i), dw = problem.angular_velocity_correction(i);
     for (int d = 0; d < 3; d++) buf[m++] = dv[d];
@@ -387,6 +524,11 @@ int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
 void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  if (exchange_mode == Exchange::virial) {
+    for (int k = 0; k < n; k++)
+      for (int c = 0; c < 6; c++) vatom[list[k]][c] += buf[m++];
+    return;
+  }
   for (int k = 0; k < n; k++) {
     nscd::SolverBody &body = problem.bodies[list[k]];
     for (int d = 0; d < 3; d++) body.velocity[d] += buf[m++];

@@ -28,8 +28,8 @@ class FixNSCD : public Fix {
   int setmask() override;
   void init() override;
   void setup(int) override;
+  void post_force(int) override;
   void final_integrate() override;
-  void reset_dt() override;
   double compute_vector(int) override;
 
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -43,6 +43,8 @@ class FixNSCD : public Fix {
   // The contacts of the last solve (grain-grain first, then boundaries), with impulses.
   const std::vector<nscd::Contact> &contacts() const { return problem.contacts; }
   double timestep() const { return dt; }
+  // 0 for a grain-grain contact, else k for the k-th boundary fix (in definition order).
+  int boundary_of(size_t contact) const;
 
  private:
   nscd::SolverOptions options;
@@ -59,14 +61,18 @@ class FixNSCD : public Fix {
   nscd::WarmStartCache warm_start;
   std::vector<nscd::Contact> restored_contacts;    // warm start read from a restart file
 
-  enum class Exchange { state, correction, velocity } exchange_mode = Exchange::state;
+  enum class Exchange { state, correction, velocity, virial } exchange_mode = Exchange::state;
 
   // diagnostics of the last step
   nscd::SolveReport report;
-  bigint unconverged_steps = 0, last_warning_step = -1;
+  bigint unconverged_steps = 0, last_warning_step = -1, last_speed_warning_step = -1;
+  double max_step_travel = 0.0;    // largest 2 (|v| + |w| R) dt over the group, last step
   double kinetic_translational = 0.0, kinetic_rotational = 0.0;
+  double warm_start_dt = 0.0;    // timestep of the stored warm-start impulses
 
   void find_partners();
+  void check_grains_are_consistent();
+  void check_no_points_in_group();
   void build_bodies();
   void gather_contacts();
   void solve();
@@ -74,7 +80,9 @@ class FixNSCD : public Fix {
   nscd::ResidualTerms global_terms() const;
   void move_grains();
   void hand_back_forces();
+  void tally_virial(int i, int j, const nscd::Vec3 &point, const nscd::Vec3 &force);
   void warn_if_unconverged();
+  void warn_if_contacts_can_be_missed();
   void measure_kinetic_energy();
 };
 

@@ -4,11 +4,13 @@
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
+#include "nscd_contact.h"
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
 #include "update.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -97,6 +99,11 @@ int FixNSCDWall::parse_option(int narg, char **arg, int iarg)
 }
 
 /* fix_modify ID velocity VX VY VZ | friction MU | restitution E */
+int FixNSCDWall::setmask()
+{
+  return 0;    // fix nscd drives it; setup() is called for every fix all the same
+}
+
 int FixNSCDWall::modify_param(int narg, char **arg)
 {
   const std::string key = arg[0];
@@ -113,26 +120,46 @@ void FixNSCDWall::init()
                "contacts); define fix nscd as well", id);
 }
 
-void FixNSCDWall::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+/* A grain whose centre lies beyond the wall surface would be shot back across it in one
+   step: that is a wrong wall (normal pointing out of the domain?) or a wrong grain. */
+void FixNSCDWall::setup(int /*vflag*/)
 {
+  tagint first_outside = MAXTAGINT, any_outside;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
-    const nscd::ContactSet set = kind == Kind::plane
-        ? nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), plane, activation, workspace)
-        : nscd::contact_grain_cylinder(avec->shape_of(i), avec->pose(i), cylinder, activation, workspace);
+    const nscd::Vec3 x(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
+    if (!inside(x)) first_outside = std::min(first_outside, atom->tag[i]);
+  }
+  MPI_Allreduce(&first_outside, &any_outside, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any_outside != MAXTAGINT)
+    error->all(FLERR, "fix nscd/wall {}: the centre of grain ID {} is outside the wall ({}); "
+               "check the wall's position and that its normal points into the domain", id,
+               any_outside, kind == Kind::plane ? "behind the plane" : "outside the cylinder");
+}
+
+bool FixNSCDWall::inside(const nscd::Vec3 &x) const
+{
+  if (kind == Kind::plane) return (x - plane.point).dot(plane.normal) > 0.0;
+  const nscd::Vec3 d = x - cylinder.axis_point;
+  return (d - d.dot(cylinder.axis_direction) * cylinder.axis_direction).norm() < cylinder.radius;
+}
+
+void FixNSCDWall::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+{
+  const ContactLaw law{friction, restitution};
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    nscd::ContactSet set;
+    try {
+      set = kind == Kind::plane
+          ? nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), plane, activation, workspace)
+          : nscd::contact_grain_cylinder(avec->shape_of(i), avec->pose(i), cylinder, activation, workspace);
+    } catch (std::exception &e) {
+      error->one(FLERR, "fix nscd/wall {}: contact with grain ID {} failed: {}", id, atom->tag[i], e.what());
+    }
     for (const nscd::ContactPoint &p : set) {
-      nscd::Contact c;
-      c.body_i = i;
-      c.body_j = nscd::kEnvironment;
-      c.point = p.point;
-      c.normal = p.normal;
-      c.gap = p.gap;
-      c.friction = friction;
-      c.restitution = restitution;
+      nscd::Contact c = make_contact(p, i, nscd::kEnvironment, atom->tag[i], wall_tag, law);
       c.wall_velocity = velocity;
-      c.key.tag_i = atom->tag[i];
-      c.key.tag_j = wall_tag;
-      c.key.feature = p.key;
       contacts.push_back(c);
     }
   }
@@ -157,19 +184,28 @@ double FixNSCDWall::compute_vector(int n)
   return reference_point()[n - 3];
 }
 
+/* Restart: the wall's kind and current reference point (it may have moved); the deck that
+   defines the wall again after read_restart keeps its own settings (velocity, friction). */
 void FixNSCDWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   const nscd::Vec3 &p = reference_point();
-  const double state[3] = {p.x(), p.y(), p.z()};
+  const double state[4] = {kind == Kind::plane ? 0.0 : 1.0, p.x(), p.y(), p.z()};
   const int size = sizeof(state);
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(state, sizeof(double), 3, fp);
+  fwrite(state, sizeof(double), 4, fp);
 }
 
 void FixNSCDWall::restart(char *buf)
 {
-  double state[3];
+  double state[4];
   std::memcpy(state, buf, sizeof(state));
-  reference_point() = nscd::Vec3(state[0], state[1], state[2]);
+  const Kind stored = state[0] == 0.0 ? Kind::plane : Kind::cylinder;
+  if (stored != kind) {
+    if (comm->me == 0)
+      error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "
+                     "its position is not used", id, stored == Kind::plane ? "plane" : "cylinder");
+    return;
+  }
+  reference_point() = nscd::Vec3(state[1], state[2], state[3]);
 }

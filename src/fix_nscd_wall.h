@@ -22,8 +22,9 @@ class FixNSCDWall : public Fix, public NSCDBoundary {
  public:
   FixNSCDWall(class LAMMPS *, int, char **);
 
-  int setmask() override { return 0; }
+  int setmask() override;
   void init() override;
+  void setup(int) override;
   int modify_param(int, char **) override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;
@@ -46,6 +47,7 @@ class FixNSCDWall : public Fix, public NSCDBoundary {
 
   nscd::Vec3 &reference_point() { return kind == Kind::plane ? plane.point : cylinder.axis_point; }
   int parse_option(int narg, char **arg, int iarg);
+  bool inside(const nscd::Vec3 &x) const;
 };
 
 }    // namespace LAMMPS_NS

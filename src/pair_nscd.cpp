@@ -12,7 +12,7 @@
 #include "neigh_request.h"
 #include "neighbor.h"
 
-#include "geometry/feature_key.h"
+#include "nscd_contact.h"
 
 #include <cmath>
 #include <cstring>
@@ -23,7 +23,7 @@ PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp)
 {
   single_enable = 0;
   restartinfo = 1;
-  no_virial_fdotr_compute = 1;    // the contact forces are known only after fix nscd's solve
+  no_virial_fdotr_compute = 1;    // no forces here: fix nscd carries the contact virial
   finitecutflag = 1;
 }
 
@@ -55,6 +55,8 @@ void PairNSCD::allocate()
 /* pair_style nscd [activation D | activation/fraction F] */
 void PairNSCD::settings(int narg, char **arg)
 {
+  activation_given = -1.0;
+  activation_fraction = 0.1;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
@@ -158,46 +160,28 @@ void PairNSCD::compute(int eflag, int vflag)
 void PairNSCD::add_grain_contacts(int i, int j)
 {
   double **x = atom->x;
+  const nscd::Spheropolyhedron &shape_i = avec->shape_of(i), &shape_j = avec->shape_of(j);
   const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-  const double reach = avec->radius[i] + avec->radius[j] + activation;
-  if (dx * dx + dy * dy + dz * dz >= reach * reach) return;    // bounding spheres apart
-  const nscd::ContactSet set =
-      nscd::contact_grains(avec->shape_of(i), avec->pose(i), avec->shape_of(j), avec->pose(j),
-                           activation, workspace);
-  const tagint tag_i = atom->tag[i], tag_j = atom->tag[j];
-  const int itype = atom->type[i], jtype = atom->type[j];
-  for (const nscd::ContactPoint &p : set) {
-    nscd::Contact c;
-    c.body_i = i;
-    c.body_j = j;
-    c.point = p.point;
-    c.normal = p.normal;
-    c.gap = p.gap;
-    c.friction = mu[itype][jtype];
-    c.restitution = restitution_coeff[itype][jtype];
-    // Warm-start keys name the feature pair in the order of increasing atom ID, so the
-    // same contact found as (j, i) on a later step maps to the same key.
-    c.key.tag_i = tag_i;
-    c.key.tag_j = tag_j;
-    c.key.feature = tag_i < tag_j ? p.key : nscd::swapped_key(p.key);
-    found.push_back(c);
+  // The shapes' own bounding radii, not the per-atom radius a `set diameter` could change.
+  const double reach = shape_i.bounding_radius + shape_j.bounding_radius + activation;
+  if (dx * dx + dy * dy + dz * dz >= reach * reach) return;
+  nscd::ContactSet set;
+  try {
+    set = nscd::contact_grains(shape_i, avec->pose(i), shape_j, avec->pose(j), activation, workspace);
+  } catch (std::exception &e) {
+    error->one(FLERR, "pair_style nscd: contact of atoms {} and {} failed: {}", atom->tag[i],
+               atom->tag[j], e.what());
   }
+  const ContactLaw law{mu[atom->type[i]][atom->type[j]], restitution_coeff[atom->type[i]][atom->type[j]]};
+  for (const nscd::ContactPoint &p : set)
+    found.push_back(make_contact(p, i, j, atom->tag[i], atom->tag[j], law));
 }
 
-void PairNSCD::tally_contact_force(int i, int j, const double *f)
+/* For `neighbor multi`: grains of bounding radii ri and rj interact within ri + rj plus the
+   activation distance. */
+double PairNSCD::radii2cut(double ri, double rj)
 {
-  if (!vflag_either) return;
-  double **x = atom->x;
-  const double d[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
-  const double v[6] = {d[0] * f[0], d[1] * f[1], d[2] * f[2],
-                       d[0] * f[1], d[0] * f[2], d[1] * f[2]};
-  if (vflag_global)
-    for (int k = 0; k < 6; k++) virial[k] += v[k];
-  if (vflag_atom)
-    for (int k = 0; k < 6; k++) {
-      vatom[i][k] += 0.5 * v[k];
-      vatom[j][k] += 0.5 * v[k];
-    }
+  return ri + rj + activation;
 }
 
 void PairNSCD::write_restart(FILE *fp)

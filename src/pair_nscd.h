@@ -1,7 +1,7 @@
 /* pair_style nscd: finds the contacts between neighbouring grains (rigid spheropolyhedra)
    and holds the per type-pair contact laws (friction, restitution). It adds no force of its
-   own: fix nscd solves the contact impulses and hands the resulting forces back here for
-   the virial (pressure, compute stress/atom). See doc/pair_nscd.md. */
+   own: fix nscd solves the contact impulses (and carries their virial). See
+   doc/pair_nscd.md. */
 
 #ifdef PAIR_CLASS
 // clang-format off
@@ -36,6 +36,7 @@ class PairNSCD : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+  double radii2cut(double, double) override;
 
   // Grain-grain contacts found by the last compute(): body indices are local atom
   // indices (owned or ghost), keys are (tag, tag, feature) canonical for warm starting.
@@ -43,10 +44,6 @@ class PairNSCD : public Pair {
   double activation_distance() const { return activation; }
   double friction(int itype, int jtype) const { return mu[itype][jtype]; }
   double restitution(int itype, int jtype) const { return restitution_coeff[itype][jtype]; }
-
-  // Adds the virial of a solved contact force (on i, -force on j) for pressure and
-  // per-atom stress; called by fix nscd after its solve, in the same timestep.
-  void tally_contact_force(int i, int j, const double *force);
 
  protected:
   double activation_given = -1.0;    // from `activation D`; < 0: use the fraction

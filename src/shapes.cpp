@@ -65,16 +65,33 @@ void Shapes::command(int narg, char **arg)
                "write, info or assign)", what);
 }
 
-/* shapes read FILE : every rank parses the file, so every rank holds the same library. */
+void Shapes::broadcast(std::string &text)
+{
+  int n = (int) text.size();
+  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  text.resize(n);
+  MPI_Bcast(&text[0], n, MPI_CHAR, 0, world);
+}
+
+/* shapes read FILE */
 void Shapes::read(int narg, char **arg)
 {
   if (narg != 1) error->all(FLERR, "Illegal shapes read command: expected 'shapes read FILE'");
-  nscd::ShapeLibrary more;
-  try {
-    more.read_file(arg[0]);
-  } catch (std::exception &e) {
-    error->all(FLERR, "shapes read: {}", e.what());
+  // Rank 0 reads (the file may exist there only); every rank gets the same library.
+  std::string text, problem;
+  if (comm->me == 0) {
+    try {
+      nscd::ShapeLibrary parsed;
+      parsed.read_file(arg[0]);
+      text = parsed.serialize();
+    } catch (std::exception &e) {
+      problem = e.what();
+    }
   }
+  broadcast(problem);
+  if (!problem.empty()) error->all(FLERR, "shapes read: {}", problem);
+  broadcast(text);
+  const nscd::ShapeLibrary more = nscd::ShapeLibrary::deserialize(text);
   const int first = avec->shapes().size() + 1;
   avec->add_shapes(more);
   if (comm->me == 0)

@@ -12,6 +12,8 @@ CommandStyle(shapes,Shapes);
 
 #include "command.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 class AtomVecSpheropolyhedron;
@@ -29,6 +31,7 @@ class Shapes : public Command {
   void write(int, char **);
   void info(int, char **);
   void assign(int, char **);
+  void broadcast(std::string &text);    // from rank 0 to all
 };
 
 }    // namespace LAMMPS_NS

@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 
 using LAMMPS_NS::LAMMPS;
 
@@ -28,6 +29,10 @@ int main(int argc, char **argv)
     MPI_Barrier(MPI_COMM_WORLD);
     MPI_Finalize();
     std::exit(1);
+  } catch (std::exception &e) {    // a bug: nothing in the package should let one escape
+    std::fflush(nullptr);
+    std::fprintf(stderr, "lmp: unexpected error: %s\n", e.what());
+    MPI_Abort(MPI_COMM_WORLD, 1);
   }
   MPI_Barrier(MPI_COMM_WORLD);
   MPI_Finalize();

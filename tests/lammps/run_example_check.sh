@@ -6,16 +6,20 @@ lmp=$1; src=$2; work=$3
 rm -rf "$work"; mkdir -p "$work"; cp "$src"/in.* "$work"/
 cd "$work"
 deck=$(ls in.* | head -n 1)
-"$lmp" -in "$deck" -log log.lammps > screen.txt
 name=$(basename "$src")
 case "$name" in
-  pile)
+  pile)    # the first 300 steps only: the whole pour is a run of minutes
+    "$lmp" -in "$deck" -log log.lammps -var steps 300 > screen.txt
     grep -q "^Loop time" log.lammps
-    atoms=$(awk '/^ *[0-9]+ +[0-9]+ +[0-9.e+-]+ *$/ {n=$2} END {print n}' log.lammps)
-    [ "$atoms" = 384 ] || { echo "expected 384 grains in thermo output, got '$atoms'"; exit 1; }
+    grep -q "Created 384 atoms" log.lammps || { echo "expected 384 grains"; exit 1; }
     [ -s grains.0.vtk ] && [ -s pile.data ] && [ -s pile.shapes ]
     polys=$(awk '/^POLYGONS/ {print $2}' grains.0.vtk)
     [ "$polys" -gt 384 ] || { echo "grains.0.vtk has only '$polys' polygons"; exit 1; }
+    ! grep -q "ERROR\|Lost atoms" log.lammps
+    ;;
+  *)
+    "$lmp" -in "$deck" -log log.lammps > screen.txt
+    grep -q "^Loop time" log.lammps
     ;;
 esac
 echo "example $name: ok"

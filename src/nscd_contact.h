@@ -1,0 +1,41 @@
+/* One place that turns a geometric contact point into a contact of the NSCD problem, for
+   every style that finds contacts (pair_style nscd, fix nscd/wall). */
+
+#ifndef LMP_NSCD_CONTACT_H
+#define LMP_NSCD_CONTACT_H
+
+#include "geometry/contact.h"
+#include "geometry/feature_key.h"
+#include "solver/contact_problem.h"
+
+#include <cstdint>
+
+namespace LAMMPS_NS {
+
+struct ContactLaw {
+  double friction = 0.0;
+  double restitution = 0.0;
+};
+
+// body_j < 0 (nscd::kEnvironment) for a wall. The warm-start key names the feature pair in
+// the order of increasing ID, so that finding the pair as (j, i) later gives the same key.
+inline nscd::Contact make_contact(const nscd::ContactPoint &p, int body_i, int body_j,
+                                  std::int64_t id_i, std::int64_t id_j, const ContactLaw &law)
+{
+  nscd::Contact c;
+  c.body_i = body_i;
+  c.body_j = body_j;
+  c.point = p.point;
+  c.normal = p.normal;
+  c.gap = p.gap;
+  c.friction = law.friction;
+  c.restitution = law.restitution;
+  c.key.tag_i = id_i;
+  c.key.tag_j = id_j;
+  c.key.feature = id_i < id_j ? p.key : nscd::swapped_key(p.key);
+  return c;
+}
+
+}    // namespace LAMMPS_NS
+
+#endif
