@@ -247,6 +247,13 @@ void FixNSCD::build_bodies()
     body.external_angular_impulse =
         dt * (vec3(avec->torque[b]) + nscd::gyroscopic_torque(moments, q, body.angular_velocity));
   }
+  global_bodies.clear();
+  for (NSCDBoundary *b : boundaries) {
+    if (!b->has_body()) continue;
+    b->set_body_index((int) problem.bodies.size());
+    global_bodies.push_back((int) problem.bodies.size());
+    problem.bodies.push_back(b->body(dt));
+  }
 }
 
 void FixNSCD::gather_contacts()
@@ -317,6 +324,21 @@ void FixNSCD::exchange_velocities()
   comm->reverse_comm_fix(this, 6);
   exchange_mode = Exchange::velocity;
   comm->forward_comm_fix(this, 6);
+  // A body every rank holds takes the corrections of all ranks' contacts.
+  for (int b : global_bodies) {
+    nscd::SolverBody &body = problem.bodies[b];
+    double mine[6], all[6];
+    const nscd::Vec3 dv = problem.velocity_correction(b), dw = problem.angular_velocity_correction(b);
+    for (int d = 0; d < 3; d++) {
+      mine[d] = dv[d];
+      mine[3 + d] = dw[d];
+    }
+    MPI_Allreduce(mine, all, 6, MPI_DOUBLE, MPI_SUM, world);
+    for (int d = 0; d < 3; d++) {
+      body.velocity[d] += all[d] - mine[d];
+      body.angular_velocity[d] += all[3 + d] - mine[3 + d];
+    }
+  }
   problem.mark_synchronised();
 }
 
@@ -359,7 +381,11 @@ void FixNSCD::move_grains()
     store(body.velocity, v[i]);
     store(body.angular_velocity, avec->omega[i]);
   }
-  for (NSCDBoundary *b : boundaries) b->advance(dt);
+  size_t next_body = 0;    // global bodies were added in boundary order
+  for (NSCDBoundary *b : boundaries) {
+    if (b->has_body()) b->take_body(problem.bodies[global_bodies[next_body++]], dt, options.theta);
+    b->advance(dt);
+  }
 }
 
 /* Solved impulses / dt are the contact forces of the step: their virial (this fix's, for
@@ -367,7 +393,7 @@ void FixNSCD::move_grains()
 void FixNSCD::hand_back_forces()
 {
   const std::vector<nscd::Contact> &c = problem.contacts;
-  if (vflag_either) {
+  if (vflag_global || vflag_atom) {    // (Fix::v_setup of this LAMMPS leaves vflag_either unset)
     for (const nscd::Contact &contact : c)
       tally_virial(contact.body_i, contact.body_j, contact.point, contact.impulse / dt);
     if (vflag_atom) {    // ghosts' shares go to their owners
@@ -382,10 +408,11 @@ void FixNSCD::hand_back_forces()
   }
 }
 
-/* Grain pair: (x_i - x_j) (x) F, half to each grain. Boundary: (x_i - contact point) (x) F,
-   all to the grain, as LAMMPS' wall fixes do. */
+/* Grain pair: (x_i - x_j) (x) F, half to each grain. Boundary (wall, plate): (x_i - contact
+   point) (x) F, all to the grain, as LAMMPS' wall fixes do. */
 void FixNSCD::tally_virial(int i, int j, const nscd::Vec3 &point, const nscd::Vec3 &f)
 {
+  if (j >= atom->nlocal + atom->nghost) j = nscd::kEnvironment;    // a boundary's own body
   const nscd::Vec3 d = vec3(atom->x[i]) - (j >= 0 ? vec3(atom->x[j]) : point);
   const double v[6] = {d.x() * f.x(), d.y() * f.y(), d.z() * f.z(),
                        d.x() * f.y(), d.x() * f.z(), d.y() * f.z()};

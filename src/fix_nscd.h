@@ -56,6 +56,7 @@ class FixNSCD : public Fix {
   class AtomVecSpheropolyhedron *avec = nullptr;
   std::vector<class NSCDBoundary *> boundaries;
   std::vector<int> boundary_counts;
+  std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
 
   nscd::ContactProblem problem;
   nscd::WarmStartCache warm_start;

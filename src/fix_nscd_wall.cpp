@@ -23,14 +23,6 @@ nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
                     utils::numeric(FLERR, arg[2], false, lmp));
 }
 
-// A stable negative id for the wall in contact keys (FNV-1a of the fix ID), so that
-// warm starts survive other fixes being added or removed, and restarts.
-std::int64_t tag_from_id(const char *id)
-{
-  std::uint64_t h = 1469598103934665603ULL;
-  for (const char *c = id; *c; c++) h = (h ^ (unsigned char) *c) * 1099511628211ULL;
-  return -(std::int64_t) (h >> 2) - 1;
-}
 }    // namespace
 
 /* fix ID group nscd/wall plane PX PY PZ NX NY NZ [options]
@@ -43,7 +35,7 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  wall_tag = tag_from_id(id);
+  wall_tag = boundary_tag(id);
 
   const char *usage = "expected 'fix ID group nscd/wall plane PX PY PZ NX NY NZ' or 'fix ID group "
                       "nscd/wall cylinder CX CY CZ AX AY AZ R', then friction/restitution/velocity";

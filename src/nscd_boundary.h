@@ -25,6 +25,14 @@ class NSCDBoundary {
 
   // Moves the boundary by one step (prescribed velocity), after the grains have moved.
   virtual void advance(double dt) = 0;
+
+  // A boundary with a body of its own (finite mass, e.g. the loading plate) puts that body
+  // into the problem: the same body on every rank, after the atoms, at the index it is told;
+  // its contacts use that index as body_j. After the solve it gets the body back.
+  virtual bool has_body() const { return false; }
+  virtual nscd::SolverBody body(double /*dt*/) const { return nscd::SolverBody(); }
+  virtual void set_body_index(int /*index*/) {}
+  virtual void take_body(const nscd::SolverBody & /*solved*/, double /*dt*/, double /*theta*/) {}
 };
 
 }    // namespace LAMMPS_NS

@@ -36,6 +36,15 @@ inline nscd::Contact make_contact(const nscd::ContactPoint &p, int body_i, int b
   return c;
 }
 
+// A stable negative id for a boundary fix in contact keys (FNV-1a of the fix ID), so that
+// warm starts survive other fixes being added or removed, and restarts.
+inline std::int64_t boundary_tag(const char *fix_id)
+{
+  std::uint64_t h = 1469598103934665603ULL;
+  for (const char *c = fix_id; *c; c++) h = (h ^ (unsigned char) *c) * 1099511628211ULL;
+  return -(std::int64_t) (h >> 2) - 1;
+}
+
 }    // namespace LAMMPS_NS
 
 #endif

@@ -3,6 +3,7 @@
 #include "lammps_fixture.h"
 
 #include "atom_vec_spheropolyhedron.h"
+#include "compute.h"
 #include "fix_nscd.h"
 #include "modify.h"
 #include "output.h"
@@ -255,4 +256,205 @@ TEST_F(NSCDTest, BadInputNamesTheProblem)
   EXPECT_NE(error_of("run 1").find("pair coeffs are not set"), std::string::npos);
   commands({"pair_coeff * * 0.3"});
   EXPECT_NE(error_of("run 1").find("point (shape 0)"), std::string::npos);
+}
+
+// The plate (mass 2, weight 2) on four cubes, loaded at a constant rate: quasi-static, so
+// the grains carry load + plate weight, the floor that plus their own weight.
+TEST_F(NSCDTest, PlateLoadedAtConstantRateIsCarriedByTheGrains)
+{
+  scene();
+  for (double x : {-1.2, 1.2})
+    for (double y : {-1.2, 1.2}) add_cube(x, y, 0.5);
+  commands({"shapes assign all shape 1 density 1",
+            "fix plate all nscd/plate 1.0 mass 2 rate 10 gravity 1 friction 0.5", "run 1000"});
+  const double load = 10.0 * 1.0;    // rate x time
+  EXPECT_NEAR(fix_value("plate", 3), load, 1e-9);
+  EXPECT_NEAR(fix_value("plate", 2), load + 2.0, 1e-3);           // reaction on the plate
+  EXPECT_NEAR(fix_value("floor", 2), -(load + 2.0 + 4.0), 1e-3);
+  EXPECT_NEAR(fix_value("plate", 0), 1.0, 1e-7);                  // rigid grains: no sinking
+  for (tagint k = 1; k <= 4; k++) {
+    const std::vector<double> s = state_of(k);
+    EXPECT_NEAR(s[2], 0.5, 1e-7);
+    for (int d = 3; d < 9; d++) EXPECT_NEAR(s[d], 0.0, 1e-6);
+  }
+}
+
+// A plate 800 times heavier than each cube: bounded, converged, reactions right.
+TEST_F(NSCDTest, HeavyLoadingPlateOnFewGrains)
+{
+  scene(0.5, "tolerance 1e-8 max_sweeps 5000");
+  for (double x : {-1.2, 1.2})
+    for (double y : {-1.2, 1.2}) add_cube(x, y, 0.5);
+  commands({"shapes assign all shape 1 density 1",
+            "fix plate all nscd/plate 1.0 mass 800 gravity 1 friction 0.5", "run 300"});
+  EXPECT_NEAR(fix_value("floor", 2), -804.0, 1e-5 * 804.0);
+  EXPECT_NEAR(fix_value("plate", 2), 800.0, 1e-5 * 800.0);
+  EXPECT_NEAR(fix_value("plate", 0), 1.0, 1e-7);
+  EXPECT_EQ(fix_value("solver", 7), 1.0);
+  EXPECT_LT(fix_value("solver", 2), 1e-7);
+}
+
+// Virial of a 4-cube stack: sum over contacts of (x_i - x_j)_z F_z = 1 (3 + 2 + 1) between
+// cubes plus 0.5 * 4 from the floor = 8, seen by compute pressure and compute stress/atom.
+TEST_F(NSCDTest, ContactVirialReachesPressureAndStressPerAtom)
+{
+  scene();
+  for (int k = 0; k < 4; k++) add_cube(0.0, 0.0, 0.5 + k);
+  commands({"shapes assign all shape 1 density 1", "compute p all pressure NULL virial",
+            "compute s all stress/atom NULL virial", "compute ssum all reduce sum c_s[3]",
+            "thermo_style custom step c_p[3] c_ssum", "run 200"});
+  const double volume = 20.0 * 20.0 * 20.0;
+  auto *p = lmp->modify->compute[lmp->modify->find_compute("p")];
+  p->compute_vector();
+  EXPECT_NEAR(p->vector[2] * volume, 8.0, 1e-7);
+  auto *ssum = lmp->modify->compute[lmp->modify->find_compute("ssum")];
+  EXPECT_NEAR(ssum->compute_scalar(), -8.0, 1e-7);
+}
+
+TEST_F(NSCDTest, ContactsComputeListsEveryPointWithItsForce)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "compute c all nscd/contacts active",
+            "compute fn all reduce sum c_c[9]", "compute walls all reduce max c_c[2]",
+            "thermo_style custom step c_fn c_walls", "run 100"});
+  auto *c = lmp->modify->compute[lmp->modify->find_compute("c")];
+  c->compute_local();
+  int rows = c->size_local_rows, all_rows = 0;
+  MPI_Allreduce(&rows, &all_rows, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(all_rows, 4);
+  for (int r = 0; r < rows; r++) {
+    EXPECT_EQ(c->array_local[r][1], -1.0);      // the first boundary fix: the floor
+    EXPECT_NEAR(c->array_local[r][7], 1.0, 1e-12);    // normal +z
+    EXPECT_GT(c->array_local[r][8], 0.0);
+  }
+  auto *fn = lmp->modify->compute[lmp->modify->find_compute("fn")];
+  EXPECT_NEAR(fn->compute_scalar(), 1.0, 1e-9);
+}
+
+// A cube pushed sideways by gravity against the inside of a cylinder (a silo wall).
+TEST_F(NSCDTest, CylinderWallHoldsAGrainPushedAgainstIt)
+{
+  scene(0.0);
+  add_cube(2.4, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "unfix floor",
+            "fix silo all nscd/wall cylinder 0 0 0 0 0 1 3.0", "unfix g",
+            "fix g all gravity 1.0 vector 1 0 0", "run 500"});
+  EXPECT_NEAR(fix_value("silo", 0), 1.0, 1e-8);    // the grain's weight on the wall, along +x
+  const std::vector<double> s = state_of(1);
+  // Two vertical edges touch the cylinder: x = sqrt(9 - 0.25) - 0.5
+  EXPECT_NEAR(s[0], std::sqrt(9.0 - 0.25) - 0.5, 1e-7);
+  EXPECT_NEAR(s[1], 0.0, 1e-9);
+}
+
+TEST_F(NSCDTest, GrainsOutsideTheGroupStayPutAndCarryTheOthers)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  add_cube(0.2, 0.0, 1.5, 2);
+  commands({"shapes assign all shape 1 density 1", "group top type 2", "unfix solver",
+            "fix solver top nscd tolerance 1e-10", "run 500"});
+  const std::vector<double> bottom = state_of(1), top = state_of(2);
+  EXPECT_NEAR(bottom[2], 0.5, 0.0);
+  EXPECT_NEAR(top[2], 1.5, 1e-9);
+  EXPECT_NEAR(normal_force_between(1, 2), 1.0, 1e-9);
+}
+
+TEST_F(NSCDTest, PeriodicImagesOnOneRankActAsNeighbours)
+{
+
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary p p f",
+            "shapes read " + scratch("shapes"), "region box block -10 10 -10 10 -1 19",
+            "create_box 2 box", "pair_style nscd", "pair_coeff * * 0.5", "neighbor 0.3 bin",
+            "timestep 0.001", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+            "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd tolerance 1e-10"});
+  add_cube(9.8, 0.0, 0.5);     // straddles the periodic boundary at x = +-10
+  add_cube(-9.9, 0.0, 1.5);    // rests on the image of the first
+  commands({"shapes assign all shape 1 density 1", "run 500"});
+  EXPECT_NEAR(fix_value("floor", 2), -2.0, 1e-8);
+  EXPECT_NEAR(state_of(2)[2], 1.5, 1e-8);
+  EXPECT_NEAR(normal_force_between(1, 2), 1.0, 1e-8);
+}
+
+TEST_F(NSCDTest, RunZeroAndAnEmptyDumpWork)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "group nobody empty",
+            "dump d nobody grains/vtk 1 " + scratch("empty.*.vtk"), "run 0", "run 2"});
+  if (rank() == 0) {
+    std::ifstream in(scratch("empty.2.vtk"));
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("POINTS 0"), std::string::npos);
+    EXPECT_EQ(text.find("# vtk"), text.rfind("# vtk"));    // one header, not one per rank
+  }
+}
+
+// Restart carries the warm start: the first step after read_restart needs as few sweeps as
+// the uninterrupted run's (a cold start of this frictional stack needs hundreds).
+TEST_F(NSCDTest, RestartCarriesTheWarmStart)
+{
+  const std::string solver = "fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1";
+  scene(0.5, "tolerance 1e-9 max_sweeps 5000 check 1");
+  for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.5 + k);
+  commands({"shapes assign all shape 1 density 1", "run 300",
+            "write_restart " + scratch("stack.restart"), "run 1"});
+  const double sweeps_straight = fix_value("solver", 0);
+  restart_instance();
+  commands({"read_restart " + scratch("stack.restart"), "neighbor 0.3 bin",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+            "fix g all gravity 1.0 vector 0 0 -1", solver, "run 1"});
+  EXPECT_LE(fix_value("solver", 0), sweeps_straight + 2);
+  // and without the stored impulses (a new fix ID), the same step is a cold start
+  restart_instance();
+  commands({"read_restart " + scratch("stack.restart"), "neighbor 0.3 bin",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+            "fix g all gravity 1.0 vector 0 0 -1",
+            "fix cold all nscd tolerance 1e-9 max_sweeps 5000 check 1", "run 1"});
+  EXPECT_GT(fix_value("cold", 0), 10 * (sweeps_straight + 2));
+}
+
+TEST_F(NSCDTest, MovedWallComesBackFromRestart)
+{
+  scene(0.0);
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1",
+            "fix pusher all nscd/wall plane -3.0 0 0 1 0 0 velocity 0.5 0 0", "run 1000",
+            "write_restart " + scratch("wall.restart")});
+  restart_instance();
+  commands({"read_restart " + scratch("wall.restart"), "neighbor 0.3 bin",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1",
+            "fix pusher all nscd/wall plane -3.0 0 0 1 0 0 velocity 0.5 0 0",
+            "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd", "run 0"});
+  EXPECT_NEAR(fix_value("pusher", 3), -2.5, 1e-12);
+}
+
+// A small pile of random grains poured into a box comes to rest with little overlap and
+// the floor carries its weight.
+TEST_F(NSCDTest, SmallPileComesToRestOnTheFloor)
+{
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+            "shapes random 8 seed 7 vertices 12 20 size 0.8 1.2 axes 0.8 0.6 radius 0.05",
+            "lattice sc " + num(1.0 / (1.7 * 1.7 * 1.7)), "region sites block 0 2.99 0 2.99 0 2.99",
+            "region box block -0.5 6.5 -0.5 6.5 -1 8 units box", "create_box 1 box",
+            "create_atoms 1 region sites", "displace_atoms all move 1.2 1.2 1.2 units box",
+            "shapes assign all shape random 1 8 11 density 1 orient random 13",
+            "pair_style nscd activation 0.1", "pair_coeff * * 0.5", "neighbor 0.3 bin",
+            "timestep 0.005", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+            "fix xlo all nscd/wall plane 0 0 0 1 0 0", "fix xhi all nscd/wall plane 6 0 0 -1 0 0",
+            "fix ylo all nscd/wall plane 0 0 0 0 1 0", "fix yhi all nscd/wall plane 0 6 0 0 -1 0",
+            "fix g all gravity 1.0 vector 0 0 -1",
+            "fix solver all nscd tolerance 1e-6 max_sweeps 2000",
+            "compute m all property/atom mass", "compute weight all reduce sum c_m",
+            "thermo_style custom step c_weight", "thermo_modify norm no", "run 1500",
+            // the per-step floor force jitters with 1e-4 velocity noise: average it
+            "fix floor_mean all ave/time 1 500 2000 f_floor[3]", "run 500"});
+  auto *w = lmp->modify->compute[lmp->modify->find_compute("weight")];
+  const double weight = w->compute_scalar();
+  const double kinetic = fix_value("solver", 8) + fix_value("solver", 9);
+  EXPECT_LT(kinetic, 1e-4 * weight);                        // at rest (started ~ weight x 3)
+  EXPECT_NEAR(lmp->modify->fix[lmp->modify->find_fix("floor_mean")]->compute_scalar(),
+              -weight, 0.005 * weight);
+  EXPECT_LT(fix_value("solver", 2), 0.01);                  // overlap < 1% of a grain
+  EXPECT_EQ(lmp->atom->natoms, 27);
 }

@@ -1,0 +1,162 @@
+/* fix nscd/plate: the plate's contacts with owned grains, its body in the contact problem,
+   and its motion along z. */
+
+#include "fix_nscd_plate.h"
+
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "modify.h"
+#include "nscd_contact.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, NOUTPUTS };
+}
+
+/* fix ID group nscd/plate Z mass M [load F0] [rate R] [gravity G] [friction MU]
+   [restitution E] : the plate's lower face is the plane z = Z, the grains are below it; the
+   load F0 + R t pushes it down, as does its weight M G. */
+FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  vector_flag = 1;
+  size_vector = NOUTPUTS;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  plate_tag = boundary_tag(id);
+  if (narg < 6 || strcmp(arg[4], "mass") != 0)
+    error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix ID group nscd/plate Z mass M "
+               "[load F0] [rate R] [gravity G] [friction MU] [restitution E]'");
+  z = z_start = utils::numeric(FLERR, arg[3], false, lmp);
+  mass = utils::numeric(FLERR, arg[5], false, lmp);
+  if (!(mass > 0.0) || !std::isfinite(mass))
+    error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", mass);
+  for (int iarg = 6; iarg < narg; iarg += 2) {
+    const std::string key = arg[iarg];
+    if (iarg + 1 >= narg) error->all(FLERR, "fix nscd/plate: keyword '{}' needs a value", key);
+    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (key == "load") load_start = value;
+    else if (key == "rate") load_rate = value;
+    else if (key == "gravity") gravity = value;
+    else if (key == "friction") friction = value;
+    else if (key == "restitution") restitution = value;
+    else
+      error->all(FLERR, "fix nscd/plate: unknown keyword '{}' (expected load, rate, gravity, "
+                 "friction, restitution)", key);
+  }
+  if (!(friction >= 0.0) || !std::isfinite(friction))
+    error->all(FLERR, "fix nscd/plate: friction {} must be finite and >= 0", friction);
+  if (!(restitution >= 0.0 && restitution <= 1.0))
+    error->all(FLERR, "fix nscd/plate: restitution {} must be in [0, 1]", restitution);
+}
+
+int FixNSCDPlate::setmask()
+{
+  return 0;    // driven by fix nscd
+}
+
+void FixNSCDPlate::init()
+{
+  avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/plate");
+  if (modify->find_fix_by_style("^nscd$") < 0)
+    error->all(FLERR, "fix nscd/plate {} needs fix nscd (which solves its contacts)", id);
+}
+
+void FixNSCDPlate::setup(int /*vflag*/)
+{
+  tagint first_above = MAXTAGINT, any_above;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && avec->shape[i] != 0 && atom->x[i][2] >= z)
+      first_above = std::min(first_above, atom->tag[i]);
+  MPI_Allreduce(&first_above, &any_above, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any_above != MAXTAGINT)
+    error->all(FLERR, "fix nscd/plate {}: grain ID {} is above the plate (z = {}); put the plate "
+               "above all grains", id, any_above, z);
+}
+
+void FixNSCDPlate::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+{
+  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z), nscd::Vec3(0.0, 0.0, -1.0)};
+  const ContactLaw law{friction, restitution};
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    nscd::ContactSet set;
+    try {
+      set = nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), face, activation, workspace);
+    } catch (std::exception &e) {
+      error->one(FLERR, "fix nscd/plate {}: contact with grain ID {} failed: {}", id, atom->tag[i], e.what());
+    }
+    for (const nscd::ContactPoint &p : set)
+      contacts.push_back(make_contact(p, i, body_index, atom->tag[i], plate_tag, law));
+  }
+}
+
+/* The plate moves along z only and does not turn: its inverse mass acts on z alone and its
+   inverse inertia is zero. The load of a step is the one at its end (implicit, as the
+   contact forces), so that after the step f_ID[4] is the load the grains carried. */
+nscd::SolverBody FixNSCDPlate::body(double dt) const
+{
+  nscd::SolverBody b;
+  b.position = nscd::Vec3(0.0, 0.0, z);
+  b.velocity = nscd::Vec3(0.0, 0.0, vz);
+  b.inv_mass = 1.0 / mass;
+  b.inv_mass_axes = nscd::Vec3(0.0, 0.0, 1.0);
+  const double load_at_end = load() + load_rate * dt;
+  b.external_impulse = nscd::Vec3(0.0, 0.0, -dt * (load_at_end + mass * gravity));
+  return b;
+}
+
+void FixNSCDPlate::take_body(const nscd::SolverBody &solved, double dt, double theta)
+{
+  const double v_new = solved.velocity.z();
+  z += dt * ((1.0 - theta) * vz + theta * v_new);
+  vz = v_new;
+  elapsed += dt;
+}
+
+void FixNSCDPlate::take_impulses(const nscd::Contact *first, int count, double dt)
+{
+  double mine = 0.0;
+  for (int k = 0; k < count; k++) mine -= first[k].impulse.z();    // on the plate
+  mine /= dt;
+  MPI_Allreduce(&mine, &reaction, 1, MPI_DOUBLE, MPI_SUM, world);
+}
+
+double FixNSCDPlate::compute_vector(int n)
+{
+  switch (n) {
+    case Z: return z;
+    case VZ: return vz;
+    case REACTION: return reaction;
+    case LOAD: return load();
+    case DISPLACEMENT: return z - z_start;
+  }
+  return 0.0;
+}
+
+/* Restart: position, velocity and the time the load has grown for. */
+void FixNSCDPlate::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double state[4] = {z, vz, elapsed, z_start};
+  const int size = sizeof(state);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(state, sizeof(double), 4, fp);
+}
+
+void FixNSCDPlate::restart(char *buf)
+{
+  double state[4];
+  std::memcpy(state, buf, sizeof(state));
+  z = state[0];
+  vz = state[1];
+  elapsed = state[2];
+  z_start = state[3];
+}
