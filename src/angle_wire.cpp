@@ -1,0 +1,129 @@
+/* angle_style wire: LAMMPS glue around nscd::wire::bending_node_forces. */
+
+#include "angle_wire.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <cmath>
+
+using namespace LAMMPS_NS;
+
+namespace {
+nscd::Vec3 vec3(const double *a) { return nscd::Vec3(a[0], a[1], a[2]); }
+}    // namespace
+
+AngleWire::AngleWire(LAMMPS *lmp) : Angle(lmp) {}
+
+AngleWire::~AngleWire()
+{
+  if (allocated) memory->destroy(setflag);
+}
+
+void AngleWire::allocate()
+{
+  allocated = 1;
+  const int n = atom->nangletypes;
+  memory->create(setflag, n + 1, "angle:setflag");
+  for (int i = 1; i <= n; i++) setflag[i] = 0;
+  stiffness.assign(n + 1, 0.0);
+}
+
+nscd::wire::BendingForces AngleWire::joint(int type, const nscd::Vec3 &a, const nscd::Vec3 &b,
+                                           const nscd::Vec3 &c) const
+{
+  try {
+    return nscd::wire::bending_node_forces(stiffness[type], a, b, c);
+  } catch (std::exception &e) {
+    error->one(FLERR, "angle_style wire: angle of type {}: {}; two wire nodes of a joint "
+               "coincide (check the initial positions)", type, e.what());
+  }
+  return {};
+}
+
+void AngleWire::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  double **x = atom->x, **f = atom->f;
+  int **anglelist = neighbor->anglelist;
+  const int nlocal = atom->nlocal, newton_bond = force->newton_bond;
+
+  for (int n = 0; n < neighbor->nanglelist; n++) {
+    const int i1 = anglelist[n][0], i2 = anglelist[n][1], i3 = anglelist[n][2];
+    const int type = anglelist[n][3];
+    const nscd::wire::BendingForces e = joint(type, vec3(x[i1]), vec3(x[i2]), vec3(x[i3]));
+    const int node[3] = {i1, i2, i3};
+    const nscd::Vec3 *force[3] = {&e.on_a, &e.on_b, &e.on_c};
+    for (int k = 0; k < 3; k++)
+      if (newton_bond || node[k] < nlocal)
+        for (int d = 0; d < 3; d++) f[node[k]][d] += (*force[k])[d];
+    if (evflag) {
+      const nscd::Vec3 d1 = vec3(x[i1]) - vec3(x[i2]), d2 = vec3(x[i3]) - vec3(x[i2]);
+      double f1[3] = {e.on_a.x(), e.on_a.y(), e.on_a.z()};
+      double f3[3] = {e.on_c.x(), e.on_c.y(), e.on_c.z()};
+      ev_tally(i1, i2, i3, nlocal, newton_bond, e.energy, f1, f3, d1.x(), d1.y(), d1.z(),
+               d2.x(), d2.y(), d2.z());
+    }
+  }
+}
+
+/* angle_coeff N k_rot */
+void AngleWire::coeff(int narg, char **arg)
+{
+  if (narg != 2)
+    error->all(FLERR, "angle_coeff for angle_style wire: expected 'angle_coeff N k_rot', got {} "
+               "arguments", narg);
+  if (!allocated) allocate();
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
+  const double k = utils::numeric(FLERR, arg[1], false, lmp);
+  if (!(k >= 0.0) || !std::isfinite(k))
+    error->all(FLERR, "angle_coeff wire: k_rot = {} must be a finite moment >= 0 (k_rot = EI / l)", k);
+  for (int i = ilo; i <= ihi; i++) {
+    stiffness[i] = k;
+    setflag[i] = 1;
+  }
+}
+
+// A straight wire is the rest state: LAMMPS' angle pi.
+double AngleWire::equilibrium_angle(int /*type*/)
+{
+  return MathConst::MY_PI;
+}
+
+void AngleWire::write_restart(FILE *fp)
+{
+  fwrite(&stiffness[1], sizeof(double), atom->nangletypes, fp);
+}
+
+void AngleWire::read_restart(FILE *fp)
+{
+  allocate();
+  const int n = atom->nangletypes;
+  if (comm->me == 0) utils::sfread(FLERR, &stiffness[1], sizeof(double), n, fp, nullptr, error);
+  MPI_Bcast(&stiffness[1], n, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= n; i++) setflag[i] = 1;
+}
+
+void AngleWire::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nangletypes; i++) fprintf(fp, "%d %.17g\n", i, stiffness[i]);
+}
+
+double AngleWire::single(int type, int i1, int i2, int i3)
+{
+  double **x = atom->x;
+  // closest images, as compute angle/local does for its geometry
+  double d1[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
+  double d2[3] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1], x[i3][2] - x[i2][2]};
+  domain->minimum_image(d1);
+  domain->minimum_image(d2);
+  const nscd::Vec3 b = vec3(x[i2]);
+  return joint(type, b + vec3(d1), b, b + vec3(d2)).energy;
+}

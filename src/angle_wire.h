@@ -1,0 +1,51 @@
+/* angle_style wire: the rotational spring at a wire node, moment M = k_rot * nu with
+   nu = pi - theta (theta = LAMMPS' angle, so nu = 0 for a straight wire), energy
+   k_rot nu^2 / 2 (lib/wire/elastic_forces.h). k_rot = EI / l for element length l.
+   fix wire calls the same kernel through joint() in its subcycle. See doc/angle_style_wire.md. */
+
+#ifdef ANGLE_CLASS
+// clang-format off
+AngleStyle(wire,AngleWire);
+// clang-format on
+#else
+
+#ifndef LMP_ANGLE_WIRE_H
+#define LMP_ANGLE_WIRE_H
+
+#include "angle.h"
+
+#include "wire/elastic_forces.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class AngleWire : public Angle {
+ public:
+  AngleWire(class LAMMPS *);
+  ~AngleWire() override;
+  void compute(int, int) override;
+  void coeff(int, char **) override;
+  double equilibrium_angle(int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_data(FILE *) override;
+  double single(int, int, int, int) override;
+
+  double k_rot(int type) const { return stiffness[type]; }
+
+  // Forces of the joint a-b-c (b = the node carrying the spring) of angle type `type`;
+  // a LAMMPS error if an element has zero length.
+  nscd::wire::BendingForces joint(int type, const nscd::Vec3 &a, const nscd::Vec3 &b,
+                                  const nscd::Vec3 &c) const;
+
+ private:
+  std::vector<double> stiffness;    // k_rot per angle type, index 1..nangletypes
+
+  void allocate();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

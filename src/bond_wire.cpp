@@ -1,0 +1,147 @@
+/* bond_style wire: LAMMPS glue around nscd::wire::axial_element_forces. */
+
+#include "bond_wire.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "neighbor.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+namespace {
+nscd::Vec3 vec3(const double *a) { return nscd::Vec3(a[0], a[1], a[2]); }
+}    // namespace
+
+BondWire::BondWire(LAMMPS *lmp) : Bond(lmp) {}
+
+BondWire::~BondWire()
+{
+  if (allocated) memory->destroy(setflag);
+}
+
+void BondWire::allocate()
+{
+  allocated = 1;
+  const int n = atom->nbondtypes;
+  memory->create(setflag, n + 1, "bond:setflag");
+  for (int i = 1; i <= n; i++) setflag[i] = 0;
+  laws.assign(n + 1, nscd::wire::AxialLaw{});
+  r0.assign(n + 1, 0.0);
+}
+
+nscd::wire::AxialForces BondWire::element(int type, const nscd::Vec3 &a, const nscd::Vec3 &b) const
+{
+  try {
+    return nscd::wire::axial_element_forces(laws[type], r0[type], a, b);
+  } catch (std::exception &e) {
+    error->one(FLERR, "bond_style wire: bond of type {}: {}; two bonded wire nodes coincide "
+               "(check the initial positions)", type, e.what());
+  }
+  return {};
+}
+
+void BondWire::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  double **x = atom->x, **f = atom->f;
+  int **bondlist = neighbor->bondlist;
+  const int nlocal = atom->nlocal, newton_bond = force->newton_bond;
+
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
+    const nscd::wire::AxialForces e = element(type, vec3(x[i1]), vec3(x[i2]));
+    if (newton_bond || i1 < nlocal)
+      for (int d = 0; d < 3; d++) f[i1][d] += e.on_a[d];
+    if (newton_bond || i2 < nlocal)
+      for (int d = 0; d < 3; d++) f[i2][d] += e.on_b[d];
+    if (evflag) {
+      const nscd::Vec3 del = vec3(x[i1]) - vec3(x[i2]);
+      // LAMMPS' fbond: force on i1 = del * fbond (on_a is parallel to del)
+      const double fbond = e.on_a.dot(del) / del.squaredNorm();
+      ev_tally(i1, i2, nlocal, newton_bond, e.energy, fbond, del.x(), del.y(), del.z());
+    }
+  }
+}
+
+/* bond_coeff N k_elo r0 [string yes|no]   (string: default no = resists compression) */
+void BondWire::coeff(int narg, char **arg)
+{
+  if (narg != 3 && narg != 5)
+    error->all(FLERR, "bond_coeff for bond_style wire: expected 'bond_coeff N k_elo r0 "
+               "[string yes|no]', got {} arguments", narg);
+  if (!allocated) allocate();
+  int ilo, ihi;
+  utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
+  const double k_elo = utils::numeric(FLERR, arg[1], false, lmp);
+  const double rest = utils::numeric(FLERR, arg[2], false, lmp);
+  if (!(k_elo >= 0.0) || !std::isfinite(k_elo))
+    error->all(FLERR, "bond_coeff wire: k_elo = {} must be a finite force >= 0", k_elo);
+  if (!(rest > 0.0) || !std::isfinite(rest))
+    error->all(FLERR, "bond_coeff wire: rest length r0 = {} must be > 0", rest);
+  bool string = false;
+  if (narg == 5) {
+    if (strcmp(arg[3], "string") != 0)
+      error->all(FLERR, "bond_coeff wire: unknown keyword '{}' (expected 'string yes|no')", arg[3]);
+    const std::string value = arg[4];
+    if (value != "yes" && value != "no")
+      error->all(FLERR, "bond_coeff wire: string '{}' must be yes or no", value);
+    string = value == "yes";
+  }
+  for (int i = ilo; i <= ihi; i++) {
+    laws[i].k_elo = k_elo;
+    laws[i].resists_compression = !string;
+    r0[i] = rest;
+    setflag[i] = 1;
+  }
+}
+
+double BondWire::equilibrium_distance(int type)
+{
+  return r0[type];
+}
+
+void BondWire::write_restart(FILE *fp)
+{
+  const int n = atom->nbondtypes;
+  for (int i = 1; i <= n; i++) {
+    const double row[3] = {laws[i].k_elo, r0[i], laws[i].resists_compression ? 0.0 : 1.0};
+    fwrite(row, sizeof(double), 3, fp);
+  }
+}
+
+void BondWire::read_restart(FILE *fp)
+{
+  allocate();
+  const int n = atom->nbondtypes;
+  std::vector<double> rows(3 * n);
+  if (comm->me == 0) utils::sfread(FLERR, rows.data(), sizeof(double), 3 * n, fp, nullptr, error);
+  MPI_Bcast(rows.data(), 3 * n, MPI_DOUBLE, 0, world);
+  for (int i = 1; i <= n; i++) {
+    laws[i].k_elo = rows[3 * (i - 1)];
+    r0[i] = rows[3 * (i - 1) + 1];
+    laws[i].resists_compression = rows[3 * (i - 1) + 2] == 0.0;
+    setflag[i] = 1;
+  }
+}
+
+void BondWire::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->nbondtypes; i++)
+    fprintf(fp, "%d %.17g %.17g string %s\n", i, laws[i].k_elo, r0[i],
+            laws[i].resists_compression ? "no" : "yes");
+}
+
+/* Energy of a bond of length sqrt(rsq); fforce = force on i over the distance, as in compute(). */
+double BondWire::single(int type, double rsq, int /*i*/, int /*j*/, double &fforce)
+{
+  const double r = std::sqrt(rsq);
+  const nscd::wire::AxialForces e = element(type, nscd::Vec3(r, 0.0, 0.0), nscd::Vec3::Zero());
+  fforce = e.on_a.x() / r;
+  return e.energy;
+}

@@ -1,0 +1,34 @@
+/* compute wire/local: one row per wire element (bond of bond_style wire) with the IDs of its
+   two nodes, strain, tension and elastic energy, evaluated by the bond style's kernel at
+   the current positions. For `dump local`. See doc/compute_wire_local.md. */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(wire/local,ComputeWireLocal);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_WIRE_LOCAL_H
+#define LMP_COMPUTE_WIRE_LOCAL_H
+
+#include "compute.h"
+
+namespace LAMMPS_NS {
+
+class ComputeWireLocal : public Compute {
+ public:
+  ComputeWireLocal(class LAMMPS *, int, char **);
+  ~ComputeWireLocal() override;
+  void init() override;
+  void compute_local() override;
+  double memory_usage() override;
+
+ private:
+  int rows_allocated = 0;
+  class BondWire *bond = nullptr;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,737 @@
+/* fix wire: the wire subcycle of lib/wire driven from LAMMPS' post_force. */
+
+#include "fix_wire.h"
+
+#include "angle_wire.h"
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "bond_wire.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using nscd::Vec3;
+
+namespace {
+enum Diagnostic {
+  E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
+  GRAIN_FZ, DT_SP_STABLE
+};
+
+Vec3 vec3(const double *a) { return Vec3(a[0], a[1], a[2]); }
+void add_to(double *a, const Vec3 &v)
+{
+  a[0] += v.x();
+  a[1] += v.y();
+  a[2] += v.z();
+}
+
+// One contact history entry as written to restart files.
+struct StoredHistory {
+  double key[4];    // tags, stored as doubles (exact up to 2^53)
+  double history[nscd::wire::TangentialHistory::kNumDoubles];
+};
+}    // namespace
+
+/* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [radius R]
+                     [damp C] [substeps N|auto] [dt_sp DT] [safety S] [contacts_per_node N] */
+FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  time_integrate = 1;
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  vector_flag = 1;
+  size_vector = (int) diagnostics.size();
+  global_freq = 1;
+  extvector = 0;
+  comm_forward = 6;
+  comm_reverse = 6;
+
+  int iarg = 3;
+  while (iarg < narg) parse_option(narg, arg, iarg);
+  if (law.mu_s == 0.0 && law.mu_d > 0.0) law.mu_s = law.mu_d;
+  if (law.k_n > 0.0) {    // k_n = 0: no contacts at all, the other coefficients unused
+    try {
+      nscd::wire::validate(law);
+    } catch (std::exception &e) {
+      error->all(FLERR, "fix wire: {}", e.what());
+    }
+  }
+  corrector = nscd::wire::gear5_corrector_coefficients(nscd::wire::GearCorrector::ThreeSixteenths);
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixWire::~FixWire()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(gear);
+}
+
+void FixWire::parse_option(int narg, char **arg, int &iarg)
+{
+  const std::string key = arg[iarg];
+  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value", key);
+  const char *value = arg[iarg + 1];
+  auto positive_or_zero = [&](double x) {
+    if (!(x >= 0.0) || !std::isfinite(x))
+      error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
+    return x;
+  };
+  const double x = key == "substeps" ? 0.0 : utils::numeric(FLERR, value, false, lmp);
+  if (key == "k_n") law.k_n = positive_or_zero(x);
+  else if (key == "gamma_n") law.gamma_n = positive_or_zero(x);
+  else if (key == "k_t") law.k_t = positive_or_zero(x);
+  else if (key == "gamma_t") law.gamma_t = positive_or_zero(x);
+  else if (key == "mu_s") law.mu_s = positive_or_zero(x);
+  else if (key == "mu_d") law.mu_d = positive_or_zero(x);
+  else if (key == "radius") wire_radius = positive_or_zero(x);
+  else if (key == "damp") node_damping = positive_or_zero(x);
+  else if (key == "dt_sp") {
+    requested_dt_sp = positive_or_zero(x);
+    requested_substeps = 0;
+  } else if (key == "safety") {
+    safety = x;
+    if (!(safety > 0.0 && safety <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", safety);
+  } else if (key == "contacts_per_node") contacts_per_node = positive_or_zero(x);
+  else if (key == "substeps") {
+    requested_dt_sp = 0.0;
+    requested_substeps = strcmp(value, "auto") == 0 ? 0 : utils::inumeric(FLERR, value, false, lmp);
+    if (requested_substeps < 0)
+      error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
+  } else {
+    error->all(FLERR, "fix wire: unknown keyword '{}' (expected k_n, gamma_n, k_t, gamma_t, mu_s, "
+               "mu_d, radius, damp, substeps, dt_sp, safety, contacts_per_node)", key);
+  }
+  iarg += 2;
+}
+
+int FixWire::setmask()
+{
+  return POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- setup */
+
+void FixWire::init()
+{
+  if (comm->nprocs > 1)
+    error->all(FLERR, "fix wire runs on 1 MPI rank only in this version ({} ranks given): wire-wire "
+               "contact pairs and the contact history are not distributed yet; run the wire deck "
+               "on 1 rank", comm->nprocs);
+  if (!force->newton_bond)
+    error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
+               "'newton on' or 'newton off on'");
+  avec = AtomVecSpheropolyhedron::find(lmp, "fix wire");
+  check_partners();
+  plan_substeps();
+}
+
+void FixWire::check_partners()
+{
+  bond = dynamic_cast<BondWire *>(force->bond);
+  if (atom->nbonds > 0 && !bond)
+    error->all(FLERR, "fix wire needs bond_style wire for its elements (bond_style is '{}')",
+               force->bond_style ? force->bond_style : "none");
+  angle = dynamic_cast<AngleWire *>(force->angle);
+  if (atom->nangles > 0 && !angle)
+    error->all(FLERR, "fix wire needs angle_style wire for its joints (angle_style is '{}')",
+               force->angle_style ? force->angle_style : "none");
+
+  tagint first_grain = MAXTAGINT, any_grain;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && avec->shape[i] != 0) first_grain = std::min(first_grain, atom->tag[i]);
+  MPI_Allreduce(&first_grain, &any_grain, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any_grain != MAXTAGINT)
+    error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the group must "
+               "hold wire nodes (shape 0) only, grains belong to fix nscd", any_grain,
+               group->names[igroup]);
+
+  // post_force fixes after this one would change node forces the subcycle has already used
+  bool after = false;
+  for (int f = 0; f < modify->nfix; f++) {
+    if (modify->fix[f] == this) after = true;
+    else if (after && (modify->fmask[f] & POST_FORCE) && comm->me == 0)
+      error->warning(FLERR, "fix wire: fix {} ({}) is defined after fix wire and acts in "
+                     "post_force: the wire subcycle does not see its forces; define it before fix wire",
+                     modify->fix[f]->id, modify->fix[f]->style);
+  }
+}
+
+nscd::wire::WireStiffness FixWire::stiffness() const
+{
+  nscd::wire::WireStiffness w;
+  double mass = INFINITY, length = INFINITY, k_elo = 0.0, k_rot = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && avec->shape[i] == 0) mass = std::min(mass, avec->rmass[i]);
+  MPI_Allreduce(&mass, &w.node_mass, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (bond)
+    for (int t = 1; t <= atom->nbondtypes; t++) {
+      length = std::min(length, bond->rest_length(t));
+      k_elo = std::max(k_elo, bond->law(t).k_elo);
+    }
+  if (angle)
+    for (int t = 1; t <= atom->nangletypes; t++) k_rot = std::max(k_rot, angle->k_rot(t));
+  w.element_length = std::isfinite(length) ? length : 1.0;
+  w.k_elo = k_elo;
+  w.k_rot = k_rot;
+  w.k_n = law.k_n;
+  w.gamma_contact = std::max(law.gamma_n, law.gamma_t);
+  w.contacts_per_node = contacts_per_node;
+  w.node_damping = node_damping;
+  return w;
+}
+
+/* n substeps from the options and the stability limit of lib/wire/stability.h; a named
+   error when the chosen dt_SP is above it. */
+void FixWire::plan_substeps()
+{
+  const nscd::wire::WireStiffness w = stiffness();
+  if (!std::isfinite(w.node_mass)) {    // no node in the group: nothing to integrate
+    plan = {1, update->dt};
+    stable_dt_sp = INFINITY;
+    return;
+  }
+  if (!(w.node_mass > 0.0))
+    error->all(FLERR, "fix wire: a wire node has mass {}; give every node a mass with 'shapes "
+               "assign GROUP shape 0 mass M'", w.node_mass);
+  const auto kind = nscd::wire::GearCorrector::ThreeSixteenths;
+  try {
+    stable_dt_sp = nscd::wire::max_stable_wire_step(w, kind, safety);
+    if (requested_dt_sp > 0.0) {
+      nscd::wire::check_wire_step(requested_dt_sp, w, kind, safety);
+      plan = nscd::wire::plan_subcycle(update->dt, requested_dt_sp);
+    } else {
+      plan = nscd::wire::plan_subcycle(update->dt, stable_dt_sp, requested_substeps);
+    }
+    nscd::wire::check_wire_step(plan.dt_sp, w, kind, safety);
+  } catch (std::exception &e) {
+    error->all(FLERR, "fix wire: dt_SP above the wire stability limit dt_SP max = {:.6g}: {}. Ways "
+               "out: fix wire option 'substeps auto' (default), a larger 'substeps N', a smaller "
+               "'dt_sp', or a smaller timestep", stable_dt_sp, e.what());
+  }
+}
+
+void FixWire::setup(int /*vflag*/)
+{
+  check_ghost_cutoff();
+  rescale_states(plan.dt_sp);
+  diagnostics[SUBSTEPS] = plan.substeps;
+  diagnostics[DT_SP] = plan.dt_sp;
+  diagnostics[DT_SP_STABLE] = stable_dt_sp;
+}
+
+void FixWire::reset_dt()
+{
+  plan_substeps();
+  rescale_states(plan.dt_sp);
+}
+
+/* Periodic images of grains and nodes must be ghosts when a wire element reaches them. */
+void FixWire::check_ghost_cutoff()
+{
+  if (!domain->xperiodic && !domain->yperiodic && !domain->zperiodic) return;
+  double reach = 0.0, all;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (avec->shape[i] != 0) reach = std::max(reach, avec->radius[i]);
+  MPI_Allreduce(&reach, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  double longest = 0.0;
+  if (bond)
+    for (int t = 1; t <= atom->nbondtypes; t++) longest = std::max(longest, bond->rest_length(t));
+  const double needed = all + 1.5 * longest + wire_radius;
+  const double have = std::max(neighbor->cutneighmax, comm->cutghostuser);
+  if (have < needed)
+    error->all(FLERR, "fix wire: ghost cutoff {:.6g} is below the reach {:.6g} of a wire element "
+               "(largest grain radius + 1.5 element lengths + wire radius) across a periodic "
+               "boundary; use 'comm_modify cutoff {:.6g}'", have, needed, needed);
+}
+
+void FixWire::rescale_states(double new_dt)
+{
+  if (state_dt > 0.0 && state_dt != new_dt)
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (gear[i][kGearColumns - 1] == 0.0) continue;
+      nscd::wire::Gear5State s;
+      s.unpack(gear[i]);
+      nscd::wire::gear5_change_step(s, state_dt, new_dt);
+      s.pack(gear[i]);
+    }
+  state_dt = new_dt;
+}
+
+/* ---------------------------------------------------------------------- the step */
+
+void FixWire::post_force(int /*vflag*/)
+{
+  const int ntotal = atom->nlocal + atom->nghost;
+  fbuf.assign(6 * (size_t) ntotal, 0.0);
+  vbuf.assign(3 * (size_t) ntotal, 0.0);
+  load_nodes();
+  measure_external_forces();
+  find_candidates();
+  grain_forces.reset(ntotal);
+  nscd::wire::run_subcycle(plan, corrector, nodes, grain_forces,
+      [&](const nscd::wire::SubstepInfo &info, const std::vector<Vec3> &x,
+          const std::vector<Vec3> &v, std::vector<Vec3> &f, nscd::wire::GrainForceAccumulator &) {
+        substep_forces(info, x, v, f);
+      });
+  store_nodes();
+  hand_forces_to_grains();
+  keep_histories();
+}
+
+/* The owned wire nodes (shape 0) into the node set: Gear state from the per-atom array, with
+   position and velocity taken from LAMMPS (which may have remapped or changed them).
+   Nodes outside the group are anchors: held where they are. */
+void FixWire::load_nodes()
+{
+  node_atom.clear();
+  for (int i = 0; i < atom->nlocal; i++)
+    if (avec->shape[i] == 0) node_atom.push_back(i);
+  const int n = (int) node_atom.size();
+  nodes.state.resize(n);
+  nodes.mass.resize(n);
+  nodes.fixed.resize(n);
+  nodes.dt = plan.dt_sp;
+  for (int k = 0; k < n; k++) {
+    const int i = node_atom[k];
+    nscd::wire::Gear5State &s = nodes.state[k];
+    if (gear[i][kGearColumns - 1] != 0.0) s.unpack(gear[i]);
+    else s = nscd::wire::gear5_start(vec3(atom->x[i]), vec3(atom->v[i]), Vec3::Zero(), plan.dt_sp);
+    s.r[0] = vec3(atom->x[i]);
+    s.r[1] = vec3(atom->v[i]) * plan.dt_sp;
+    nodes.mass[k] = avec->rmass[i];
+    nodes.fixed[k] = (atom->mask[i] & groupbit) ? 0 : 1;
+  }
+  nscd::wire::prepare_wire_nodes(nodes, plan.dt_sp);
+}
+
+void FixWire::store_nodes()
+{
+  double **x = atom->x, **v = atom->v;
+  for (int k = 0; k < nodes.size(); k++) {
+    const int i = node_atom[k];
+    if (nodes.fixed[k]) continue;
+    const nscd::wire::Gear5State &s = nodes.state[k];
+    for (int d = 0; d < 3; d++) {
+      x[i][d] = s.position()[d];
+      v[i][d] = s.velocity(plan.dt_sp)[d];
+    }
+    s.pack(gear[i]);
+    gear[i][kGearColumns - 1] = 1.0;
+  }
+  share_node_state();    // ghosts at the final positions, for later fixes and output
+}
+
+/* External force on a node = LAMMPS' force (gravity, addforce, ...) minus what bond_style
+   and angle_style wire put there, which the subcycle recomputes every substep. The same
+   kernels at the same positions give the same numbers, so the difference is exact up to
+   the order of summation. */
+void FixWire::measure_external_forces()
+{
+  share_node_state();
+  std::fill(fbuf.begin(), fbuf.end(), 0.0);
+  double ea, eb;
+  add_elastic_forces(&ea, &eb);
+  sum_ghost_forces(3);
+  external_force.resize(nodes.size());
+  for (int k = 0; k < nodes.size(); k++) {
+    const int i = node_atom[k];
+    external_force[k] = vec3(atom->f[i]) - vec3(&fbuf[3 * (size_t) i]);
+  }
+}
+
+void FixWire::substep_forces(const nscd::wire::SubstepInfo &info, const std::vector<Vec3> &x,
+                             const std::vector<Vec3> &v, std::vector<Vec3> &f)
+{
+  for (int k = 0; k < nodes.size(); k++) {
+    if (nodes.fixed[k]) continue;
+    const int i = node_atom[k];
+    for (int d = 0; d < 3; d++) {
+      atom->x[i][d] = x[k][d];
+      vbuf[3 * (size_t) i + d] = v[k][d];
+    }
+  }
+  share_node_state();
+  std::fill(fbuf.begin(), fbuf.end(), 0.0);
+  add_elastic_forces(&diagnostics[E_AXIAL], &diagnostics[E_BENDING]);
+  add_contact_forces(info.time, info.dt);
+  sum_ghost_forces(3);
+  for (int k = 0; k < nodes.size(); k++)
+    f[k] = vec3(&fbuf[3 * (size_t) node_atom[k]]) + external_force[k] - node_damping * v[k];
+}
+
+/* Positions and velocities of the owned nodes to their ghost copies. */
+void FixWire::share_node_state()
+{
+  comm_mode = Comm::node_state;
+  comm->forward_comm_fix(this, 6);
+}
+
+void FixWire::sum_ghost_forces(int columns)
+{
+  comm_mode = columns == 3 ? Comm::node_force : Comm::grain_force;
+  comm->reverse_comm_fix(this, columns);
+}
+
+/* Bond and angle forces of every element and joint, by the kernels of bond_style wire and
+   angle_style wire, into fbuf (3 per local atom). */
+double FixWire::add_elastic_forces(double *energy_axial, double *energy_bending)
+{
+  double **x = atom->x;
+  *energy_axial = *energy_bending = 0.0;
+  if (bond)
+    for (int n = 0; n < neighbor->nbondlist; n++) {
+      const int *b = neighbor->bondlist[n];
+      const nscd::wire::AxialForces e = bond->element(b[2], vec3(x[b[0]]), vec3(x[b[1]]));
+      add_to(&fbuf[3 * (size_t) b[0]], e.on_a);
+      add_to(&fbuf[3 * (size_t) b[1]], e.on_b);
+      *energy_axial += e.energy;
+    }
+  if (angle)
+    for (int n = 0; n < neighbor->nanglelist; n++) {
+      const int *a = neighbor->anglelist[n];
+      const nscd::wire::BendingForces e = angle->joint(a[3], vec3(x[a[0]]), vec3(x[a[1]]), vec3(x[a[2]]));
+      add_to(&fbuf[3 * (size_t) a[0]], e.on_a);
+      add_to(&fbuf[3 * (size_t) a[1]], e.on_b);
+      add_to(&fbuf[3 * (size_t) a[2]], e.on_c);
+      *energy_bending += e.energy;
+    }
+  return *energy_axial + *energy_bending;
+}
+
+/* ---------------------------------------------------------------------- contacts */
+
+/* Element pairs and element-grain pairs close enough to touch during this step (bounding
+   spheres plus the neighbour skin), built once per LAMMPS step. Elements sharing a node or
+   joined by one element are skipped: their contact is the wire's own bending. */
+void FixWire::find_candidates()
+{
+  std::vector<Candidate> found;
+  if (law.k_n > 0.0 && bond) {
+    double **x = atom->x;
+    tagint *tag = atom->tag;
+    const int ntotal = atom->nlocal + atom->nghost;
+    const double margin = neighbor->skin;
+    struct Element { int a, b; Vec3 centre; double half; };
+    std::vector<Element> elements;
+    std::set<std::pair<tagint, tagint>> linked;
+    for (int n = 0; n < neighbor->nbondlist; n++) {
+      int a = neighbor->bondlist[n][0], b = neighbor->bondlist[n][1];
+      if (tag[a] > tag[b]) std::swap(a, b);
+      const Vec3 xa = vec3(x[a]), xb = vec3(x[b]);
+      elements.push_back({a, b, 0.5 * (xa + xb), 0.5 * (xb - xa).norm()});
+      linked.insert({tag[a], tag[b]});
+    }
+    auto joined = [&](tagint p, tagint q) {
+      return p == q || linked.count({std::min(p, q), std::max(p, q)}) > 0;
+    };
+    for (const Element &e : elements) {
+      for (int j = 0; j < ntotal; j++) {
+        if (avec->shape[j] == 0) continue;
+        const double reach = e.half + wire_radius + avec->radius[j] + margin;
+        if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) continue;
+        found.push_back({e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
+      }
+    }
+    for (size_t p = 0; p < elements.size(); p++)
+      for (size_t q = p + 1; q < elements.size(); q++) {
+        const Element *A = &elements[p], *B = &elements[q];
+        const tagint ta[2] = {tag[A->a], tag[A->b]}, tb[2] = {tag[B->a], tag[B->b]};
+        bool near = false;
+        for (tagint s : ta)
+          for (tagint t : tb) near = near || joined(s, t);
+        if (near) continue;
+        const double reach = A->half + B->half + 2.0 * wire_radius + margin;
+        if ((A->centre - B->centre).squaredNorm() > reach * reach) continue;
+        if (std::make_pair(tb[0], tb[1]) < std::make_pair(ta[0], ta[1])) std::swap(A, B);
+        found.push_back({A->a, A->b, B->a, B->b, {tag[A->a], tag[A->b], tag[B->a], tag[B->b]}, {}});
+      }
+  }
+  for (Candidate &c : found) {
+    const auto it = histories.find(c.key);
+    if (it != histories.end()) c.history = it->second;
+  }
+  candidates.swap(found);
+
+  // rigid motion of the grains over the step at their current velocities
+  motion.resize(atom->nlocal + atom->nghost);
+  for (const Candidate &c : candidates)
+    if (c.b2 < 0) {
+      const int j = c.b1;
+      motion[j].start = avec->pose(j);
+      motion[j].velocity = vec3(atom->v[j]);
+      motion[j].angular_velocity = vec3(avec->omega[j]);
+    }
+}
+
+void FixWire::add_contact_forces(double tau, double dt)
+{
+  double energy = 0.0;
+  int wire_wire = 0, wire_grain = 0;
+  for (Candidate &c : candidates) {
+    if (c.b2 < 0) wire_grain += wire_grain_force(c, tau, dt, energy);
+    else wire_wire += wire_wire_force(c, dt, energy);
+  }
+  diagnostics[E_CONTACT] = energy;
+  diagnostics[N_WIRE_WIRE] = wire_wire;
+  diagnostics[N_WIRE_GRAIN] = wire_grain;
+}
+
+/* Element A = (a1, a2) against grain b1 at its pose after time tau. */
+bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &energy)
+{
+  double **x = atom->x;
+  const nscd::wire::GrainMotion &m = motion[c.b1];
+  const nscd::Pose pose = m.pose_at(tau);
+  const nscd::Segment segment{vec3(x[c.a1]), vec3(x[c.a2]), wire_radius};
+  const auto contact = nscd::contact_segment_grain(segment, avec->shape_of(c.b1), pose, 0.0, workspace);
+  if (!contact || contact->gap >= 0.0) {
+    c.history = {};
+    return false;
+  }
+  const nscd::wire::LeverWeights w = nscd::wire::lever_weights(contact->s_i);
+  const Vec3 v_wire = w.on_a * vec3(&vbuf[3 * (size_t) c.a1]) + w.on_b * vec3(&vbuf[3 * (size_t) c.a2]);
+  const Vec3 v_rel = v_wire - m.point_velocity(contact->point, tau);
+  const nscd::wire::SoftContactForce r =
+      nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history);
+  add_to(&fbuf[3 * (size_t) c.a1], w.on_a * r.force);
+  add_to(&fbuf[3 * (size_t) c.a2], w.on_b * r.force);
+  grain_forces.add(c.b1, -r.force, contact->point - pose.position);
+  energy += r.elastic_energy;
+  return true;
+}
+
+/* Element A = (a1, a2) against element B = (b1, b2); the force on A, minus on B, each
+   split over its nodes by the lever rule. */
+bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
+{
+  double **x = atom->x;
+  const nscd::Segment A{vec3(x[c.a1]), vec3(x[c.a2]), wire_radius};
+  const nscd::Segment B{vec3(x[c.b1]), vec3(x[c.b2]), wire_radius};
+  const auto contact = nscd::contact_segments(A, B, 0.0);
+  if (!contact || contact->gap >= 0.0) {
+    c.history = {};
+    return false;
+  }
+  auto node_v = [&](int i) { return vec3(&vbuf[3 * (size_t) i]); };
+  const nscd::wire::LeverWeights wa = nscd::wire::lever_weights(contact->s_i);
+  const nscd::wire::LeverWeights wb = nscd::wire::lever_weights(contact->s_j);
+  const Vec3 v_rel = (wa.on_a * node_v(c.a1) + wa.on_b * node_v(c.a2)) -
+      (wb.on_a * node_v(c.b1) + wb.on_b * node_v(c.b2));
+  const nscd::wire::SoftContactForce r =
+      nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history);
+  add_to(&fbuf[3 * (size_t) c.a1], wa.on_a * r.force);
+  add_to(&fbuf[3 * (size_t) c.a2], wa.on_b * r.force);
+  add_to(&fbuf[3 * (size_t) c.b1], -wb.on_a * r.force);
+  add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * r.force);
+  energy += r.elastic_energy;
+  return true;
+}
+
+/* Mean wire->grain force and torque over the substeps, added to the owners' f and torque
+   (ghost grains' shares summed onto their owners first). */
+void FixWire::hand_forces_to_grains()
+{
+  const int ntotal = atom->nlocal + atom->nghost;
+  std::fill(fbuf.begin(), fbuf.end(), 0.0);
+  Vec3 total = Vec3::Zero();
+  for (int j = 0; j < ntotal; j++) {
+    if (avec->shape[j] == 0) continue;
+    const Vec3 force = grain_forces.mean_force(j), torque = grain_forces.mean_torque(j);
+    for (int d = 0; d < 3; d++) {
+      fbuf[6 * (size_t) j + d] = force[d];
+      fbuf[6 * (size_t) j + 3 + d] = torque[d];
+    }
+    total += force;
+  }
+  double mine[3] = {total.x(), total.y(), total.z()}, all[3];
+  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  for (int d = 0; d < 3; d++) diagnostics[GRAIN_FX + d] = all[d];
+  sum_ghost_forces(6);
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (avec->shape[i] == 0) continue;
+    const double *g = &fbuf[6 * (size_t) i];
+    for (int d = 0; d < 3; d++) {
+      atom->f[i][d] += g[d];
+      avec->torque[i][d] += g[3 + d];
+    }
+  }
+}
+
+/* Histories of the contacts still closed at the end of the step, for the next one. */
+void FixWire::keep_histories()
+{
+  histories.clear();
+  for (const Candidate &c : candidates) {
+    const nscd::wire::TangentialHistory &h = c.history;
+    if (h.xi[0] != 0.0 || h.xi[1] != 0.0 || h.xi[2] != 0.0 || h.sliding != 0.0) histories[c.key] = h;
+  }
+}
+
+double FixWire::compute_vector(int n)
+{
+  return diagnostics[n];
+}
+
+/* ---------------------------------------------------------------------- comm */
+
+int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  double shift[3] = {0.0, 0.0, 0.0};
+  if (pbc_flag) {
+    shift[0] = pbc[0] * domain->xprd;
+    shift[1] = pbc[1] * domain->yprd;
+    shift[2] = pbc[2] * domain->zprd;
+    if (domain->triclinic) {
+      shift[0] += pbc[5] * domain->xy + pbc[4] * domain->xz;
+      shift[1] += pbc[3] * domain->yz;
+    }
+  }
+  int m = 0;
+  for (int k = 0; k < n; k++) {
+    const int j = list[k];
+    for (int d = 0; d < 3; d++) buf[m++] = atom->x[j][d] + shift[d];
+    for (int d = 0; d < 3; d++) buf[m++] = vbuf[3 * (size_t) j + d];
+  }
+  return m;
+}
+
+void FixWire::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++) {
+    for (int d = 0; d < 3; d++) atom->x[i][d] = buf[m++];
+    for (int d = 0; d < 3; d++) vbuf[3 * (size_t) i + d] = buf[m++];
+  }
+}
+
+int FixWire::pack_reverse_comm(int n, int first, double *buf)
+{
+  const int cols = comm_mode == Comm::grain_force ? 6 : 3;
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int d = 0; d < cols; d++) buf[m++] = fbuf[(size_t) cols * i + d];
+  return m;
+}
+
+void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  const int cols = comm_mode == Comm::grain_force ? 6 : 3;
+  int m = 0;
+  for (int k = 0; k < n; k++)
+    for (int d = 0; d < cols; d++) fbuf[(size_t) cols * list[k] + d] += buf[m++];
+}
+
+/* ---------------------------------------------------------------------- per-atom state */
+
+void FixWire::grow_arrays(int nmax)
+{
+  memory->grow(gear, nmax, kGearColumns, "wire:gear");
+}
+
+void FixWire::copy_arrays(int i, int j, int /*delflag*/)
+{
+  std::copy(gear[i], gear[i] + kGearColumns, gear[j]);
+}
+
+void FixWire::set_arrays(int i)
+{
+  std::fill(gear[i], gear[i] + kGearColumns, 0.0);
+}
+
+int FixWire::pack_exchange(int i, double *buf)
+{
+  std::copy(gear[i], gear[i] + kGearColumns, buf);
+  return kGearColumns;
+}
+
+int FixWire::unpack_exchange(int nlocal, double *buf)
+{
+  std::copy(buf, buf + kGearColumns, gear[nlocal]);
+  return kGearColumns;
+}
+
+int FixWire::pack_restart(int i, double *buf)
+{
+  buf[0] = kGearColumns + 1;    // LAMMPS convention: the count includes this slot
+  std::copy(gear[i], gear[i] + kGearColumns, buf + 1);
+  return kGearColumns + 1;
+}
+
+void FixWire::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  std::copy(&extra[nlocal][m + 1], &extra[nlocal][m + 1] + kGearColumns, gear[nlocal]);
+}
+
+int FixWire::size_restart(int /*nlocal*/)
+{
+  return kGearColumns + 1;
+}
+
+int FixWire::maxsize_restart()
+{
+  return kGearColumns + 1;
+}
+
+/* Global restart: the step of the stored Gear states and the contact histories. */
+void FixWire::write_restart(FILE *fp)
+{
+  std::vector<double> data{state_dt, (double) histories.size()};
+  for (const auto &entry : histories) {
+    for (tagint t : entry.first) data.push_back((double) t);
+    const nscd::wire::TangentialHistory &h = entry.second;
+    data.insert(data.end(), {h.xi[0], h.xi[1], h.xi[2], h.sliding});
+  }
+  if (comm->me == 0) {
+    const int size = (int) (data.size() * sizeof(double));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(data.data(), sizeof(double), data.size(), fp);
+  }
+}
+
+void FixWire::restart(char *buf)
+{
+  const double *data = reinterpret_cast<const double *>(buf);
+  state_dt = data[0];
+  const size_t count = (size_t) data[1];
+  const size_t width = sizeof(StoredHistory) / sizeof(double);
+  histories.clear();
+  for (size_t k = 0; k < count; k++) {
+    const double *row = data + 2 + k * width;
+    ContactKey key;
+    for (int d = 0; d < 4; d++) key[d] = (tagint) row[d];
+    nscd::wire::TangentialHistory h;
+    for (int d = 0; d < 3; d++) h.xi[d] = row[4 + d];
+    h.sliding = row[7];
+    histories[key] = h;
+  }
+}
+
+double FixWire::memory_usage()
+{
+  return (double) atom->nmax * kGearColumns * sizeof(double) +
+      (double) (fbuf.size() + vbuf.size()) * sizeof(double) +
+      (double) candidates.size() * sizeof(Candidate);
+}

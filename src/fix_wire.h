@@ -1,0 +1,139 @@
+/* fix wire: integrates elastic wire nodes (atoms of shape 0 joined by bond_style wire and
+   angle_style wire) with the Gear-5 predictor-corrector on a subcycle of n substeps per
+   LAMMPS step (lib/wire/subcycle.h), with soft wire-wire and wire-grain contacts
+   (lib/wire/soft_contact.h, lib/geometry). The wire->grain forces and torques averaged over
+   the substeps are added to the grains' f and torque in post_force, so fix nscd takes them
+   as external forces. See doc/fix_wire.md. */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(wire,FixWire);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_WIRE_H
+#define LMP_FIX_WIRE_H
+
+#include "fix.h"
+
+#include "geometry/contact.h"
+#include "wire/soft_contact.h"
+#include "wire/stability.h"
+#include "wire/subcycle.h"
+
+#include <array>
+#include <map>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixWire : public Fix {
+ public:
+  FixWire(class LAMMPS *, int, char **);
+  ~FixWire() override;
+
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+  double memory_usage() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+
+  double substep() const { return plan.dt_sp; }
+  int substeps() const { return plan.substeps; }
+
+  // Identity of a contact, stable across steps and restarts: the two node tags of
+  // element A (ascending), then element B's two node tags, or (grain tag, 0).
+  using ContactKey = std::array<tagint, 4>;
+
+ private:
+  // Gear state per atom: 18 scaled derivatives, then 1 if the state is initialised.
+  static constexpr int kGearColumns = nscd::wire::Gear5State::kNumDoubles + 1;
+  double **gear = nullptr;
+  double state_dt = 0.0;    // the step the stored scaled derivatives refer to
+
+  // options
+  nscd::wire::SoftContactLaw law;
+  double wire_radius = 0.0;
+  double node_damping = 0.0;
+  int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
+  double requested_dt_sp = 0.0;
+  double safety = 0.5;
+  double contacts_per_node = 2.0;
+
+  class BondWire *bond = nullptr;
+  class AngleWire *angle = nullptr;
+  class AtomVecSpheropolyhedron *avec = nullptr;
+
+  nscd::wire::SubcyclePlan plan;
+  double stable_dt_sp = 0.0;
+  std::array<double, 6> corrector{};
+
+  // per step
+  nscd::wire::WireNodeSet nodes;
+  std::vector<int> node_atom;              // node k -> local atom index
+  std::vector<nscd::Vec3> external_force;  // per node: atom f minus the wire's own elastic force
+  std::vector<double> fbuf;                // per local atom: 3 (node forces) or 6 (grain f, torque)
+  std::vector<double> vbuf;                // per local atom: node velocity (3)
+  std::vector<nscd::wire::GrainMotion> motion;    // per local grain
+  nscd::wire::GrainForceAccumulator grain_forces;
+  nscd::ContactWorkspace workspace;
+  enum class Comm { node_state, node_force, grain_force } comm_mode = Comm::node_state;
+
+  struct Candidate {
+    int a1, a2;    // element A's nodes (local indices)
+    int b1, b2;    // element B's nodes, or (grain, -1)
+    ContactKey key;
+    nscd::wire::TangentialHistory history;
+  };
+  std::vector<Candidate> candidates;
+  std::map<ContactKey, nscd::wire::TangentialHistory> histories;    // between steps
+
+  // diagnostics of the last substep; see compute_vector()
+  std::array<double, 11> diagnostics{};
+
+  void parse_option(int narg, char **arg, int &iarg);
+  void check_partners();
+  void plan_substeps();
+  nscd::wire::WireStiffness stiffness() const;
+  void check_ghost_cutoff();
+  void rescale_states(double new_dt);
+
+  void load_nodes();
+  void store_nodes();
+  void measure_external_forces();
+  void find_candidates();
+  void substep_forces(const nscd::wire::SubstepInfo &info, const std::vector<nscd::Vec3> &x,
+                      const std::vector<nscd::Vec3> &v, std::vector<nscd::Vec3> &f);
+  void share_node_state();
+  double add_elastic_forces(double *energy_axial, double *energy_bending);
+  void add_contact_forces(double tau, double dt);
+  bool wire_grain_force(Candidate &c, double tau, double dt, double &energy);
+  bool wire_wire_force(Candidate &c, double dt, double &energy);
+  void sum_ghost_forces(int columns);
+  void hand_forces_to_grains();
+  void keep_histories();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
