@@ -124,6 +124,12 @@ void PairNSCD::init_style()
     activation = activation_fraction * smallest;
   }
   neighbor->request(this, instance_me);
+  // Contacts are found from the neighbour list every step: a stale list misses them.
+  if ((neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check) && comm->me == 0)
+    error->warning(FLERR, "pair_style nscd: the neighbour list may be rebuilt too late "
+                   "(neigh_modify every {} delay {} check {}); contacts can be missed. Use "
+                   "'neigh_modify every 1 delay 0 check yes'", neighbor->every, neighbor->delay,
+                   neighbor->dist_check ? "yes" : "no");
 }
 
 double PairNSCD::init_one(int i, int j)

@@ -59,7 +59,7 @@ class NSCDTest : public LammpsTest {
     commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
          "shapes read " + scratch("shapes"), "region box block -10 10 -10 10 -1 19",
          "create_box 2 box", "pair_style nscd", "pair_coeff * * " + num(mu),
-         "neighbor 0.3 bin", "timestep 0.001",
+         "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes", "timestep 0.001",
          "fix floor all nscd/wall plane 0 0 0 0 0 1 friction " + num(mu),
          "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd " + fix_options});
   }
@@ -216,7 +216,7 @@ TEST_F(NSCDTest, RunContinuedFromRestartFollowsTheUninterruptedRun)
   for (int k = 1; k <= 3; k++) straight.push_back(state_of(k));
 
   restart_instance();
-  commands({"read_restart " + scratch("mid.restart"), "neighbor 0.3 bin",
+  commands({"read_restart " + scratch("mid.restart"), "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
        "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
        "fix solver all nscd tolerance 1e-10 max_sweeps 2000", "run 300"});
   for (int k = 1; k <= 3; k++) {
@@ -365,7 +365,7 @@ TEST_F(NSCDTest, PeriodicImagesOnOneRankActAsNeighbours)
 
   commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary p p f",
             "shapes read " + scratch("shapes"), "region box block -10 10 -10 10 -1 19",
-            "create_box 2 box", "pair_style nscd", "pair_coeff * * 0.5", "neighbor 0.3 bin",
+            "create_box 2 box", "pair_style nscd", "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
             "timestep 0.001", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
             "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd tolerance 1e-10"});
   add_cube(9.8, 0.0, 0.5);     // straddles the periodic boundary at x = +-10
@@ -401,13 +401,13 @@ TEST_F(NSCDTest, RestartCarriesTheWarmStart)
             "write_restart " + scratch("stack.restart"), "run 1"});
   const double sweeps_straight = fix_value("solver", 0);
   restart_instance();
-  commands({"read_restart " + scratch("stack.restart"), "neighbor 0.3 bin",
+  commands({"read_restart " + scratch("stack.restart"), "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
             "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
             "fix g all gravity 1.0 vector 0 0 -1", solver, "run 1"});
   EXPECT_LE(fix_value("solver", 0), sweeps_straight + 2);
   // and without the stored impulses (a new fix ID), the same step is a cold start
   restart_instance();
-  commands({"read_restart " + scratch("stack.restart"), "neighbor 0.3 bin",
+  commands({"read_restart " + scratch("stack.restart"), "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
             "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
             "fix g all gravity 1.0 vector 0 0 -1",
             "fix cold all nscd tolerance 1e-9 max_sweeps 5000 check 1", "run 1"});
@@ -422,7 +422,7 @@ TEST_F(NSCDTest, MovedWallComesBackFromRestart)
             "fix pusher all nscd/wall plane -3.0 0 0 1 0 0 velocity 0.5 0 0", "run 1000",
             "write_restart " + scratch("wall.restart")});
   restart_instance();
-  commands({"read_restart " + scratch("wall.restart"), "neighbor 0.3 bin",
+  commands({"read_restart " + scratch("wall.restart"), "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
             "fix floor all nscd/wall plane 0 0 0 0 0 1",
             "fix pusher all nscd/wall plane -3.0 0 0 1 0 0 velocity 0.5 0 0",
             "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd", "run 0"});
@@ -439,7 +439,7 @@ TEST_F(NSCDTest, SmallPileComesToRestOnTheFloor)
             "region box block -0.5 6.5 -0.5 6.5 -1 8 units box", "create_box 1 box",
             "create_atoms 1 region sites", "displace_atoms all move 1.2 1.2 1.2 units box",
             "shapes assign all shape random 1 8 11 density 1 orient random 13",
-            "pair_style nscd activation 0.1", "pair_coeff * * 0.5", "neighbor 0.3 bin",
+            "pair_style nscd activation 0.1", "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
             "timestep 0.005", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
             "fix xlo all nscd/wall plane 0 0 0 1 0 0", "fix xhi all nscd/wall plane 6 0 0 -1 0 0",
             "fix ylo all nscd/wall plane 0 0 0 0 1 0", "fix yhi all nscd/wall plane 0 6 0 0 -1 0",
