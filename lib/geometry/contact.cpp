@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -50,64 +52,159 @@ Core place_core(const Spheropolyhedron &shape, const Pose &pose, const Vec3 &ori
 namespace {
 
 using Candidate = ContactWorkspace::Candidate;
+using Vec2 = Eigen::Vector2d;
+constexpr int kMax = ContactSet::kMaxPoints;
 
-// Signed area of triangle (p, q, r) seen along `normal`.
-double signed_area(const Vec3 &p, const Vec3 &q, const Vec3 &r, const Vec3 &normal)
+// Twice the signed area of triangle (o, a, b): > 0 when counter-clockwise.
+double cross2(const Vec2 &o, const Vec2 &a, const Vec2 &b)
 {
-  return (q - p).cross(r - p).dot(normal);
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-// Picks at most kMaxPoints points spanning the patch: the deepest point (it must be
-// resolved), the point farthest from it, the one making the largest triangle with
-// those, and the one adding the most area outside that triangle.
-int choose_spanning_points(const std::vector<Candidate> &pts, const Vec3 &normal,
-                           std::array<int, ContactSet::kMaxPoints> &chosen)
+// Insertion sort of a few elements (std::sort on a tiny std::array trips GCC's
+// -Warray-bounds through its 16-element insertion threshold).
+template <class T, class Less>
+void small_sort(T *first, int n, const Less &less)
+{
+  for (int k = 1; k < n; ++k)
+    for (int j = k; j > 0 && less(first[j], first[j - 1]); --j) std::swap(first[j], first[j - 1]);
+}
+
+// The points chosen so far, with their coordinates in the contact plane.
+struct Selection {
+  std::array<int, kMax> index{};
+  std::array<Vec2, kMax> planar{};
+  int count = 0;
+
+  bool has(int k) const
+  {
+    return std::find(index.begin(), index.begin() + count, k) != index.begin() + count;
+  }
+};
+
+// Convex hull of the selection, counter-clockwise, collinear points dropped (Andrew's
+// monotone chain; at most kMax points, on the stack). Returns its vertex count.
+int selection_hull(const Selection &sel, std::array<Vec2, 2 * kMax> &hull)
+{
+  std::array<Vec2, kMax> p = sel.planar;
+  const int n = sel.count;
+  small_sort(p.data(), n, [](const Vec2 &a, const Vec2 &b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  if (n < 3) {
+    std::copy(p.begin(), p.begin() + n, hull.begin());
+    return n;
+  }
+  int m = 0;
+  for (int k = 0; k < n; ++k) {    // lower chain
+    while (m >= 2 && cross2(hull[m - 2], hull[m - 1], p[k]) <= 0.0) --m;
+    hull[m++] = p[k];
+  }
+  for (int k = n - 2, lower = m + 1; k >= 0; --k) {    // upper chain
+    while (m >= lower && cross2(hull[m - 2], hull[m - 1], p[k]) <= 0.0) --m;
+    hull[m++] = p[k];
+  }
+  return m - 1;    // the last point repeats the first
+}
+
+// Area the hull gains by adding q: the triangles q makes with the hull edges it sees
+// (a 2-point hull is a segment seen from both sides, so the gain is the triangle area).
+double area_gain(const std::array<Vec2, 2 * kMax> &hull, int m, const Vec2 &q)
+{
+  if (m < 2) return 0.0;
+  double gain = 0.0;
+  for (int k = 0; k < m; ++k) gain += std::max(0.0, -cross2(hull[k], hull[(k + 1) % m], q));
+  return 0.5 * gain;
+}
+
+// Fills the selection up to kMax with points of `tier`, each adding the most patch area;
+// when no point adds a significant area (one point chosen, or all collinear), the point
+// farthest from every chosen one. Ties go to the lower index (deterministic).
+template <class Tier, class Planar>
+void fill_for_coverage(const std::vector<Candidate> &pts, int tier, const Tier &tier_of,
+                       const Planar &planar, double min_area, Selection &sel)
 {
   const int n = static_cast<int>(pts.size());
-  auto argmax = [n](auto score) {
-    int best = -1;
-    double best_score = 0.0;
+  std::array<Vec2, 2 * kMax> hull;
+  while (sel.count < kMax) {
+    const int m = selection_hull(sel, hull);
+    int by_area = -1, by_distance = -1;
+    double best_area = 0.0, best_distance = 0.0;
     for (int k = 0; k < n; ++k) {
-      const double s = score(k);
-      if (best < 0 || s > best_score) {
-        best = k;
-        best_score = s;
+      if (tier_of(k) != tier || sel.has(k)) continue;
+      const Vec2 q = planar(k);
+      const double gain = area_gain(hull, m, q);
+      double distance = std::numeric_limits<double>::infinity();
+      for (int c = 0; c < sel.count; ++c) distance = std::min(distance, (q - sel.planar[c]).squaredNorm());
+      if (by_area < 0 || gain > best_area) {
+        by_area = k;
+        best_area = gain;
+      }
+      if (by_distance < 0 || distance > best_distance) {
+        by_distance = k;
+        best_distance = distance;
       }
     }
-    return std::make_pair(best, best_score);
-  };
-  const int p1 = argmax([&](int k) { return -pts[k].gap; }).first;
-  const int p2 = argmax([&](int k) { return (pts[k].position - pts[p1].position).squaredNorm(); }).first;
-  const auto [p3, area3] = argmax([&](int k) {
-    return std::abs(signed_area(pts[p1].position, pts[p2].position, pts[k].position, normal));
-  });
-  chosen = {p1, p2, p3, -1};
-  if (area3 <= 0.0) return p2 == p1 ? 1 : 2;
-  const double orientation =
-      signed_area(pts[p1].position, pts[p2].position, pts[p3].position, normal) > 0.0 ? 1.0 : -1.0;
-  const auto [p4, gain] = argmax([&](int k) {
-    const Vec3 &q = pts[k].position;
-    const double e12 = -orientation * signed_area(pts[p1].position, pts[p2].position, q, normal);
-    const double e23 = -orientation * signed_area(pts[p2].position, pts[p3].position, q, normal);
-    const double e31 = -orientation * signed_area(pts[p3].position, pts[p1].position, q, normal);
-    return std::max({e12, e23, e31});
-  });
-  if (gain <= 0.0) return 3;
-  chosen[3] = p4;
-  return 4;
+    if (by_area < 0) return;    // the tier is exhausted
+    const int k = best_area > min_area ? by_area : by_distance;
+    sel.index[sel.count] = k;
+    sel.planar[sel.count++] = planar(k);
+  }
+}
+
+// Chooses kMax of more than kMax points, depth first. Tiers: 0 penetrating or touching
+// (gap <= 0), 1 about to touch (gap <= max(smallest gap, 0) + kTouchBand * L), 2 the
+// rest. Whole tiers are kept in that order while they fit; the first that does not fit
+// is chosen from for coverage (starting with the deepest point if nothing is chosen yet,
+// which is always in the first non-empty tier). So no point is ever dropped in favour of
+// a shallower tier, and within a tier the points span the patch.
+int choose_points(const std::vector<Candidate> &pts, const Vec3 &normal, double length_scale,
+                  std::array<int, kMax> &chosen)
+{
+  const int n = static_cast<int>(pts.size());
+  int deepest = 0;
+  for (int k = 1; k < n; ++k)
+    if (pts[k].gap < pts[deepest].gap) deepest = k;
+  const double touch_limit = std::max(pts[deepest].gap, 0.0) + Tolerance::kTouchBand * length_scale;
+  auto tier_of = [&](int k) { return pts[k].gap <= 0.0 ? 0 : (pts[k].gap <= touch_limit ? 1 : 2); };
+  const Vec3 u = any_perpendicular(normal).normalized(), w = normal.cross(u);
+  auto planar = [&](int k) { return Vec2(u.dot(pts[k].position), w.dot(pts[k].position)); };
+  const double min_area = Tolerance::kClip * length_scale * length_scale;
+
+  Selection sel;
+  for (int tier = 0; tier < 3 && sel.count < kMax; ++tier) {
+    int members = 0;
+    for (int k = 0; k < n; ++k) members += tier_of(k) == tier;
+    if (sel.count + members <= kMax) {
+      for (int k = 0; k < n; ++k)
+        if (tier_of(k) == tier) {
+          sel.index[sel.count] = k;
+          sel.planar[sel.count++] = planar(k);
+        }
+      continue;
+    }
+    if (sel.count == 0) {
+      sel.index[0] = deepest;
+      sel.planar[0] = planar(deepest);
+      sel.count = 1;
+    }
+    fill_for_coverage(pts, tier, tier_of, planar, min_area, sel);
+  }
+  chosen = sel.index;
+  return sel.count;
 }
 
 }    // namespace
 
 void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
-                       const Vec3 &origin, ContactSet &out)
+                       const Vec3 &origin, double length_scale, ContactSet &out)
 {
   const auto &pts = workspace.candidates;
   std::array<int, ContactSet::kMaxPoints> chosen{};
   int count = static_cast<int>(pts.size());
   if (count > ContactSet::kMaxPoints) {
-    count = choose_spanning_points(pts, normal, chosen);
-    std::sort(chosen.begin(), chosen.begin() + count);    // keep the clipping order
+    count = choose_points(pts, normal, length_scale, chosen);
+    small_sort(chosen.data(), count, std::less<int>());    // keep the clipping order
   } else {
     for (int k = 0; k < count; ++k) chosen[k] = k;
   }
@@ -221,7 +318,7 @@ ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
   const double merge = merge_distance_for(shape_i.bounding_radius, shape_j.bounding_radius);
   const ManifoldInput in{activation, std::max(shape_i.bounding_radius, shape_j.bounding_radius), merge};
   const Vec3 normal = build_manifold(a, b, in, ws);
-  write_contact_set(ws, normal, origin, out);
+  write_contact_set(ws, normal, origin, in.length_scale, out);
   return out;
 }
 

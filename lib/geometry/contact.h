@@ -42,10 +42,12 @@ struct ContactPoint {
 
 // All points of one contact between two bodies; fixed capacity, no heap.
 struct ContactSet {
-  // A flat patch is reduced to at most this many points spanning it (a box face on a box
-  // face gives its 4 corners): enough for any force distribution over the patch, few
-  // enough to keep the contact problem well conditioned.
-  static constexpr int kMaxPoints = 4;
+  // At most this many points per contact. Every touching or penetrating point must be
+  // given to the solver (it only stops the overlap of the points it sees from growing), and
+  // a grain resting on a wall has ~8 vertices within a typical activation distance, so 8;
+  // a box on a box gives its 4 corners, two turned squares the 8 corners of their octagon.
+  // Larger patches are reduced depth first, then for coverage (doc/contact_geometry.md).
+  static constexpr int kMaxPoints = 8;
   std::array<ContactPoint, kMaxPoints> points{};
   int count = 0;
 

@@ -24,6 +24,11 @@ struct Tolerance {
   // An edge axis must beat the best face axis by this much (times the length scale)
   // to be chosen: faces give stable multi-point patches.
   static constexpr double kEdgeAxisBias = 1e-9;
+  // Point reduction: a point with 0 < gap <= max(smallest gap, 0) + this (times the length
+  // scale) is "about to touch" and is kept, after the penetrating ones, before any
+  // shallower point: it can close within a step, and a point at gap ~ 0 must not drop out
+  // of the set because round-off or jitter moved its gap to the positive side.
+  static constexpr double kTouchBand = 1e-3;
 };
 
 // A convex core placed in the query frame. Polytopes (4+ vertices) carry their topology
@@ -66,10 +71,13 @@ struct ManifoldInput {
 Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &input,
                     ContactWorkspace &workspace);
 
-// Reduces workspace.candidates to at most ContactSet::kMaxPoints points covering the
-// patch (deepest point first) and writes them, in the frame shifted back by origin.
+// Writes workspace.candidates (in the frame shifted back by origin) to out; more than
+// ContactSet::kMaxPoints are reduced depth first: every penetrating point (gap <= 0), then
+// every point about to touch (see Tolerance::kTouchBand), then the others for coverage of
+// the patch (projected along normal); a tier that does not fit is itself chosen deepest
+// first, then for coverage. length_scale: the larger bounding radius of the pair.
 void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
-                       const Vec3 &origin, ContactSet &out);
+                       const Vec3 &origin, double length_scale, ContactSet &out);
 
 }    // namespace geometry_detail
 }    // namespace nscd

@@ -3,7 +3,9 @@
 // Both distances are exact on the core's vertices: the height above a plane is linear and
 // the distance from an axis is convex, so over a convex core both reach their extreme at
 // a vertex. Every vertex closer than the activation distance is a contact point (a box
-// face on a plane gives its 4 corners); larger patches are reduced to 4 spanning points.
+// face on a plane gives its 4 corners; they are distinct supports, and the solver copes
+// with a force distribution that is not unique); only beyond ContactSet::kMaxPoints are
+// they reduced, depth first (write_contact_set), so no penetrating vertex is dropped.
 #include "geometry/contact.h"
 
 #include "geometry/core_contact.h"
@@ -80,7 +82,7 @@ ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
     const Vec3 position = v - 0.5 * (height + shape.radius) * normal;
     ws.candidates.push_back({position, v, gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
   }
-  write_contact_set(ws, normal, pose.position, out);
+  write_contact_set(ws, normal, pose.position, shape.bounding_radius, out);
   return out;
 }
 
@@ -122,9 +124,9 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
       deepest_outward = outward;
     }
   }
-  // Reduce on the plane tangent at the deepest point, then give each point its own
+  // Reduce (if needed) in the plane tangent at the deepest point, then give each point its own
   // normal (the wall is curved): from the wall towards the axis.
-  write_contact_set(ws, -deepest_outward, pose.position, out);
+  write_contact_set(ws, -deepest_outward, pose.position, shape.bounding_radius, out);
   for (int k = 0; k < out.count; ++k) {
     const Vec3 offset = out.points[k].point - wall.axis_point;
     const Vec3 radial = offset - axis.dot(offset) * axis;

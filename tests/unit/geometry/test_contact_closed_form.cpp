@@ -106,27 +106,27 @@ TEST(ContactGrains, SmallRotatedBoxOnBigBoxGivesItsOwnCorners)
     EXPECT_TRUE(has_point_at(set, xy + Vec3(0, 0, 1 + r + 0.5 * g)));
 }
 
-// Equal squares rotated 45 degrees overlap in a regular octagon: reduced to 4 points that
-// keep most of its area and stay on it.
-TEST(ContactGrains, OctagonPatchIsReducedToFourSpanningPoints)
+// Equal squares rotated 45 degrees overlap in a regular octagon. This test used to expect
+// the octagon reduced to 4 spanning points (ContactSet::kMaxPoints was 4); the capacity is
+// now 8 so that no touching point is ever dropped (a dropped point is unconstrained and
+// sinks), hence all 8 corners, each once. Reduction of larger patches:
+// test_contact_reduction.cpp.
+TEST(ContactGrains, OctagonPatchGivesItsEightCorners)
 {
   const double r = 0.05;
   const auto box = make_box(1, 1, 1, r);
   ContactWorkspace ws;
   const Quat q = rotation_about(Vec3::UnitZ(), kPi / 4);
   const auto set = contact_grains(box, place(box, Vec3(0, 0, 2 + 2 * r), q), box, place(box, Vec3::Zero()), 1e-12, ws);
-  ASSERT_EQ(set.count, 4);
+  ASSERT_EQ(set.count, 8);
   expect_all(set, Vec3::UnitZ(), 0.0);
-  // Octagon vertices are at distance 1/cos(22.5 deg) from the centre.
+  // Octagon vertices are at distance 1/cos(22.5 deg) from the centre, at angles
+  // 22.5 + 45 k degrees.
   const double rim = 1.0 / std::cos(kPi / 8);
-  for (const auto &p : set) EXPECT_NEAR(Vec3(p.point.x(), p.point.y(), 0).norm(), rim, 1e-12);
-  // Area of the chosen quadrilateral (points sorted by angle) vs the octagon's 8(sqrt2-1).
-  std::vector<Vec3> pts;
-  for (const auto &p : set) pts.push_back(p.point);
-  std::sort(pts.begin(), pts.end(), [](const Vec3 &a, const Vec3 &b) { return std::atan2(a.y(), a.x()) < std::atan2(b.y(), b.x()); });
-  double area = 0;
-  for (int k = 0; k < 4; ++k) area += 0.5 * pts[k].cross(pts[(k + 1) % 4]).z();
-  EXPECT_GT(area, 0.7 * 8 * (std::sqrt(2.0) - 1));
+  for (int k = 0; k < 8; ++k) {
+    const double a = kPi / 8 + k * kPi / 4;
+    EXPECT_TRUE(has_point_at(set, Vec3(rim * std::cos(a), rim * std::sin(a), 1 + r))) << "corner " << k;
+  }
 }
 
 // Box i tilted 45 degrees about x rests on its lowest edge: 2 points, the ends of the edge.
