@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Speed against error of fix nscd on the settled 384-grain pile of examples/pile.
+#   benchmarks/pile/run.sh [steps per tolerance, default 200]
+# Pours the pile once (examples/pile/in.pile, 4000 steps; cached as pile.restart), then
+# for each tolerance runs the same steps from the same state and prints one table row.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+lmp=${LMP:-$here/../../build/lmp}
+steps=${1:-200}
+work=${WORK:-$here/work}
+mkdir -p "$work" && cd "$work"
+if [ ! -f pile.restart ]; then
+  cp "$here/../../examples/pile/in.pile" .
+  "$lmp" -in in.pile -log pour.log -screen none -var steps 4000
+  [ -f pile.restart ] || { echo "pour did not write pile.restart" >&2; exit 1; }
+fi
+echo "| tolerance | sweeps/step (mean) | residual reached (mean) | converged steps | max predicted overlap | min gap | seconds/step |"
+echo "|---|---|---|---|---|---|---|"
+for tol in 1e-2 1e-3 1e-4 1e-5 1e-6; do
+  "$lmp" -in "$here/in.settled" -log "settled.$tol.log" -screen none -var tolerance $tol -var steps $steps
+  grep "^result" "settled.$tol.log" | awk '{printf "| %s | %s | %s | %s | %s | %s | %s |\n", $3, $5, $7, $13, $9, $11, $17}'
+done
