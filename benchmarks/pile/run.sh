@@ -18,5 +18,6 @@ echo "| tolerance | sweeps/step (mean) | residual reached (mean) | converged ste
 echo "|---|---|---|---|---|---|---|"
 for tol in 1e-2 1e-3 1e-4 1e-5 1e-6; do
   "$lmp" -in "$here/in.settled" -log "settled.$tol.log" -screen none -var tolerance $tol -var steps $steps
-  grep "^result" "settled.$tol.log" | awk '{printf "| %s | %s | %s | %s | %s | %s | %s |\n", $3, $5, $7, $13, $9, $11, $17}'
+  seconds=$(awk '/^Loop time of/ {print $4 / $9}' "settled.$tol.log")
+  grep "^result" "settled.$tol.log" | awk -v s="$seconds" '{printf "| %s | %s | %s | %s | %s | %s | %.4f |\n", $3, $5, $7, $13, $9, $11, s}'
 done
