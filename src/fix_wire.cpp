@@ -169,11 +169,21 @@ void FixWire::check_partners()
   bool after = false;
   for (int f = 0; f < modify->nfix; f++) {
     if (modify->fix[f] == this) after = true;
-    else if (after && (modify->fmask[f] & POST_FORCE) && comm->me == 0)
+    else if (after && (modify->fmask[f] & POST_FORCE) && acts_on_nodes(modify->fix[f]) && comm->me == 0)
       error->warning(FLERR, "fix wire: fix {} ({}) is defined after fix wire and acts in "
                      "post_force: the wire subcycle does not see its forces; define it before fix wire",
                      modify->fix[f]->id, modify->fix[f]->style);
   }
+}
+
+/* True if fix `other` has wire nodes of this fix's group in its own group (on any rank). */
+bool FixWire::acts_on_nodes(const Fix *other) const
+{
+  int mine = 0, any = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) mine = 1;
+  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+  return any != 0;
 }
 
 nscd::wire::WireStiffness FixWire::stiffness() const

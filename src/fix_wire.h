@@ -112,6 +112,7 @@ class FixWire : public Fix {
 
   void parse_option(int narg, char **arg, int &iarg);
   void check_partners();
+  bool acts_on_nodes(const Fix *other) const;
   void plan_substeps();
   nscd::wire::WireStiffness stiffness() const;
   void check_ghost_cutoff();

@@ -10,6 +10,7 @@
 #include "force.h"
 #include "modify.h"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,18 @@ radius 0.5
 vertices 1
 0 0 0
 end
+shape rounded_cube
+radius 0.1
+vertices 8
+-0.3 -0.3 -0.3
+0.3 -0.3 -0.3
+-0.3 0.3 -0.3
+0.3 0.3 -0.3
+-0.3 -0.3 0.3
+0.3 -0.3 0.3
+-0.3 0.3 0.3
+0.3 0.3 0.3
+end
 )";
 
 struct Point {
@@ -51,8 +64,25 @@ class WireTest : public LammpsTest {
   void write_data(const std::string &path, const std::vector<Point> &atoms, int chain, bool angles,
                   double box = 5.0)
   {
+    std::vector<std::array<int, 3>> joints;
+    for (int k = 1; angles && k <= chain - 2; k++) joints.push_back({k, k + 1, k + 2});
+    write_topology(path, atoms, chain_bonds(1, chain, false), joints, box);
+  }
+  // Bonds joining atoms first..last in order (and last to first if `closed`).
+  static std::vector<std::array<int, 2>> chain_bonds(int first, int last, bool closed)
+  {
+    std::vector<std::array<int, 2>> bonds;
+    for (int k = first; k < last; k++) bonds.push_back({k, k + 1});
+    if (closed) bonds.push_back({last, first});
+    return bonds;
+  }
+  // The same for any list of bonds and angles (atom IDs from 1).
+  void write_topology(const std::string &path, const std::vector<Point> &atoms,
+                      const std::vector<std::array<int, 2>> &bonds,
+                      const std::vector<std::array<int, 3>> &joints, double box = 5.0)
+  {
     if (rank() != 0) return;
-    const int nbonds = chain - 1, nangles = angles ? chain - 2 : 0;
+    const int nbonds = (int) bonds.size(), nangles = (int) joints.size();
     std::ofstream out(path);
     out.precision(17);
     out << "wire test\n\n" << atoms.size() << " atoms\n" << nbonds << " bonds\n" << nangles
@@ -64,14 +94,11 @@ class WireTest : public LammpsTest {
       out << k + 1 << " " << p.type << " " << p.x << " " << p.y << " " << p.z << " " << p.shape
           << " " << p.mass << " 1 0 0 0 1\n";
     }
-    if (nbonds > 0) {
-      out << "\nBonds\n\n";
-      for (int k = 1; k <= nbonds; k++) out << k << " 1 " << k << " " << k + 1 << "\n";
-    }
-    if (nangles > 0) {
-      out << "\nAngles\n\n";
-      for (int k = 1; k <= nangles; k++) out << k << " 1 " << k << " " << k + 1 << " " << k + 2 << "\n";
-    }
+    if (nbonds > 0) out << "\nBonds\n\n";
+    for (int k = 0; k < nbonds; k++) out << k + 1 << " 1 " << bonds[k][0] << " " << bonds[k][1] << "\n";
+    if (nangles > 0) out << "\nAngles\n\n";
+    for (int k = 0; k < nangles; k++)
+      out << k + 1 << " 1 " << joints[k][0] << " " << joints[k][1] << " " << joints[k][2] << "\n";
   }
 
   // Reads the data file with the wire styles set up (no pair interactions between nodes).
@@ -80,6 +107,13 @@ class WireTest : public LammpsTest {
   {
     const std::string data = scratch("wire.data");
     write_data(data, atoms, chain, angles);
+    load_scene(data, k_elo, r0, k_rot, string_option);
+  }
+  // Reads a data file written by write_data or write_topology with the wire styles set up
+  // (no pair interactions).
+  void load_scene(const std::string &data, double k_elo, double r0, double k_rot,
+                  const std::string &string_option = "")
+  {
     MPI_Barrier(MPI_COMM_WORLD);
     commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
               "boundary f f f"});
@@ -349,4 +383,230 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   run("bond_coeff 1 1 0.1");
   run("fix w wire wire");
   EXPECT_NE(error_of("run 1").find("bond_style wire"), std::string::npos);
+}
+
+// ---------------------------------------------------------------- capstan
+
+class CapstanTest : public WireTest {
+ protected:
+  static constexpr double kBall = 0.5, kWireRadius = 0.02, kLoad = 1.0;
+  static constexpr int kArc = 24, kHang = 6;    // elements on the half turn, on each side
+  int last = 0;                                 // atom ID of the heavy end
+
+  // A string (no bending) laid over the top of a fixed ball (radius 0.5, atom `last` + 1):
+  // a half turn of kArc elements whose middles touch the ball, then kHang elements hanging
+  // straight down on each side, so the wrap angle is phi = pi. Only the two end nodes are
+  // loaded (fix addforce, down): the light end by kLoad, the heavy end by `ratio` kLoad.
+  void wire_over_ball(double mu_s, double mu_d)
+  {
+    const double half = M_PI / kArc / 2.0, rho = (kBall + kWireRadius) / std::cos(half);
+    const double l = 2.0 * rho * std::sin(half);
+    std::vector<Point> atoms;
+    for (int j = kHang; j >= 1; j--) atoms.push_back({-rho, 0.0, -j * l, 0.005});
+    for (int k = 0; k <= kArc; k++) {
+      const double theta = M_PI - 2.0 * half * k;
+      atoms.push_back({rho * std::cos(theta), 0.0, rho * std::sin(theta), 0.005});
+    }
+    for (int j = 1; j <= kHang; j++) atoms.push_back({rho, 0.0, -j * l, 0.005});
+    last = (int) atoms.size();
+    atoms.push_back({0.0, 0.0, 0.0, 1.0, 2, 2});
+    const std::string data = scratch("capstan.data");
+    write_data(data, atoms, last, false);
+    load_scene(data, 1000.0, l, 0.0, " string yes");
+    commands({"group wire id 1:" + std::to_string(last), "group light id 1",
+              "group heavy id " + std::to_string(last), "variable f1 equal 0",
+              "variable f2 equal 0", "fix pull1 light addforce 0 0 v_f1",
+              "fix pull2 heavy addforce 0 0 v_f2",
+              "fix w wire wire radius " + num(kWireRadius) + " k_n 1000 gamma_n 0.2 k_t 1000 "
+              "gamma_t 0.1 mu_s " + num(mu_s) + " mu_d " + num(mu_d) + " damp 0.002"});
+  }
+
+  // Loads both ends to kLoad (0.2 time units), then the heavy end on to ratio * kLoad over
+  // 2 time units; returns how far the heavy end sinks over the next `hold` time units.
+  double sink_under_ratio(double ratio, double hold)
+  {
+    const std::string F = num(-kLoad), R = num(-ratio * kLoad);
+    commands({"variable f1 equal ramp(0," + F + ")", "variable f2 equal ramp(0," + F + ")",
+              "run 200", "variable f1 equal " + F, "variable f2 equal ramp(" + F + "," + R + ")",
+              "run 2000", "variable f2 equal " + R});
+    const double z0 = position(last)[2];
+    run("run " + std::to_string((int) std::lround(hold / 0.001)));
+    return z0 - position(last)[2];
+  }
+};
+
+TEST_F(CapstanTest, WireOverAFixedGrainHoldsBelowExpMuPhiAndSlipsAbove)
+{
+  // Capstan: a string over a fixed ball with wrap phi = pi holds while T_heavy / T_light <
+  // exp(mu phi). Bracket: at 0.9 exp(mu phi) the heavy end stays (it sinks by the elastic
+  // creep only, < 1e-3, over 1 time unit), at 1.1 exp(mu phi) it slides off (> 0.05).
+  const double mu = 0.3, capstan = std::exp(mu * M_PI);
+  wire_over_ball(mu, mu);
+  const double held = sink_under_ratio(0.9 * capstan, 1.0);
+  restart_instance();
+  wire_over_ball(mu, mu);
+  const double slid = sink_under_ratio(1.1 * capstan, 1.0);
+  std::printf("[ capstan ] exp(mu phi) = %.4f: sinks %.3g at 0.9x, %.3g at 1.1x\n", capstan, held, slid);
+  EXPECT_LT(std::fabs(held), 1e-3);
+  EXPECT_GT(slid, 0.05);
+}
+
+// ---------------------------------------------------------------- crossing wires
+
+class CrossingWiresTest : public WireTest {
+ protected:
+  static constexpr double kRadius = 0.05, kNormal = 1.0, kN = 1e4, kMass = 0.01;
+  static constexpr double kMuS = 0.5, kMuD = 0.3;
+
+  // Element A: atoms 1, 2 along x, held (not in the group). Element B: atoms 3, 4 along y,
+  // crossing A at its middle and just touching it, pressed down by kNormal and pulled along
+  // x by the variable fx (both split evenly over its two nodes).
+  void crossing()
+  {
+    const std::vector<Point> atoms = {{-0.5, 0, 0, kMass}, {0.5, 0, 0, kMass},
+                                      {0, -0.5, 2 * kRadius, kMass}, {0, 0.5, 2 * kRadius, kMass}};
+    const std::string data = scratch("crossing.data");
+    write_topology(data, atoms, {{1, 2}, {3, 4}}, {});
+    load_scene(data, 100.0, 1.0, 0.0);
+    commands({"group wire id 3 4", "variable fx equal 0",
+              "fix press wire addforce v_fx 0 " + num(-kNormal / 2),
+              "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " gamma_n 1 k_t 1e4 "
+              "gamma_t 1 mu_s " + num(kMuS) + " mu_d " + num(kMuD)});
+  }
+  // Mean of B's two nodes along axis d.
+  double b_position(int d) { return 0.5 * (position(3)[d] + position(4)[d]); }
+  void pull(double total) { run("variable fx equal " + num(total / 2)); }
+};
+
+TEST_F(CrossingWiresTest, PressedWireStaysAtTheSpringOverlapSticksUntilMuSAndSlidesAtMuD)
+{
+  crossing();
+  run("run 300");
+  // at rest under f_n: overlap = f_n / k_n (the dashpot carries nothing), within 0.1 %
+  const double overlap = 2 * kRadius - b_position(2);
+  EXPECT_NEAR(overlap / (kNormal / kN), 1.0, 1e-3);
+
+  // pull sideways, increasing by 0.001 f_n every 0.02 time units, until B moves
+  // (sticking it moves by the tangential spring only, < mu_s f_n / k_t = 5e-5)
+  run("variable fx equal ramp(0," + num(0.2 * kNormal) + ")");    // to 0.4 f_n, slowly
+  run("run 400");
+  double onset = 0.0;
+  for (double F = 0.4; F < 0.7 && onset == 0.0; F += 0.001) {
+    pull(F * kNormal);
+    run("run 20");
+    if (b_position(0) > 1e-3) onset = F;
+  }
+  // the load that broke the contact was applied in the last chunk: onset within one
+  // increment of mu_s, and the one before it held
+  std::printf("[ crossing ] slip at F / f_n = %.4f (mu_s %.2f), overlap %.6g (f_n/k_n %.4g)\n",
+              onset, kMuS, overlap, kNormal / kN);
+  EXPECT_NEAR(onset, kMuS, 1.5e-3);
+
+  // now pull by 0.4 f_n, between mu_d and mu_s: B keeps sliding, and its acceleration
+  // gives the friction force: m a = F - f_t, f_t = mu_d f_n within 0.1 %
+  const double F = 0.4 * kNormal, T = 0.05, m = 2 * kMass;
+  pull(F);
+  run("run 20");
+  double x[3], deepest = 0.0;
+  for (double &xi : x) {
+    xi = b_position(0);
+    for (int k = 0; k < 10; k++) {
+      run("run 5");
+      deepest = std::max(deepest, 2 * kRadius - b_position(2));
+    }
+  }
+  const double a = (x[2] - 2 * x[1] + x[0]) / (T * T), friction = F - m * a;
+  std::printf("[ crossing ] sliding: a %.4g, friction / f_n = %.6f (mu_d %.2f), deepest overlap %.6g\n",
+              a, friction / kNormal, kMuD, deepest);
+  EXPECT_GT(x[2] - x[1], x[1] - x[0]);    // still sliding, faster and faster
+  EXPECT_NEAR(friction / (kMuD * kNormal), 1.0, 1e-3);
+  EXPECT_LT(deepest, 1.001 * kNormal / kN);    // no interpenetration beyond the spring's
+}
+
+// ---------------------------------------------------------------- wire loop on grains
+
+class WireLoopTest : public WireTest {
+ protected:
+  static constexpr int kNodes = 72;
+  static constexpr double kNodeMass = 0.002, kBallMass = 0.5, kWireRadius = 0.02;
+
+  // Four balls (radius 0.5, atoms kNodes+1..kNodes+4) touching each other on a frictional
+  // floor (fix nscd/wall), and a closed wire loop of kNodes nodes (bonds and angles) laid
+  // around them at mid-height, its rest length 1 % short so its tension grips the balls.
+  void loop_around_balls()
+  {
+    const double rho = 0.5 + kWireRadius + 0.0025, perimeter = 4.0 + 2.0 * M_PI * rho;
+    const double l = perimeter / kNodes;
+    std::vector<Point> atoms;
+    for (int k = 0; k < kNodes; k++) atoms.push_back(loop_point(k * l, rho));
+    const double c[4][2] = {{0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}, {-0.5, -0.5}};
+    for (const auto &xy : c) atoms.push_back({xy[0], xy[1], 0.5, kBallMass, 2, 2});
+    std::vector<std::array<int, 3>> joints;
+    for (int k = 0; k < kNodes; k++) joints.push_back({k + 1, (k + 1) % kNodes + 1, (k + 2) % kNodes + 1});
+    const std::string data = scratch("loop.data");
+    write_topology(data, atoms, chain_bonds(1, kNodes, true), joints);
+    load_scene(data, 20.0, 0.99 * l, 1e-3);
+    commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0",
+              "group wire id 1:" + std::to_string(kNodes), "group balls type 2",
+              "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+              "fix g all gravity 1.0 vector 0 0 -1",
+              "fix w wire wire radius " + num(kWireRadius) + " k_n 100 gamma_n 0.05 k_t 80 "
+              "gamma_t 0.02 mu_s 0.5 mu_d 0.4 damp 0.01",
+              "fix solver balls nscd tolerance 1e-9 max_sweeps 500"});
+  }
+  // The point at arc length s along the convex hull of the four balls' circles (radius
+  // rho, centres (+-0.5, +-0.5)), at height 0.5, counter-clockwise from (0.5 + rho, -0.5).
+  static Point loop_point(double s, double rho)
+  {
+    const double c[4][2] = {{0.5, 0.5}, {-0.5, 0.5}, {-0.5, -0.5}, {0.5, -0.5}};
+    const double quarter = 0.5 * M_PI * rho;
+    for (int side = 0; side < 4; side++) {
+      const double start[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};    // outward normal
+      const double along[4][2] = {{0, 1}, {-1, 0}, {0, -1}, {1, 0}};    // direction of travel
+      const double *n = start[side], *t = along[side], *o = c[(side + 3) % 4];
+      if (s <= 1.0) return {o[0] + rho * n[0] + s * t[0], o[1] + rho * n[1] + s * t[1], 0.5, kNodeMass};
+      s -= 1.0;
+      if (s <= quarter) {
+        const double phi = std::atan2(n[1], n[0]) + s / rho;
+        return {c[side][0] + rho * std::cos(phi), c[side][1] + rho * std::sin(phi), 0.5, kNodeMass};
+      }
+      s -= quarter;
+    }
+    return {0.5 + rho, -0.5, 0.5, kNodeMass};
+  }
+  double kinetic_energy(bool wire_nodes)
+  {
+    double ke = 0.0;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if ((lmp->atom->tag[i] <= kNodes) == wire_nodes)
+        for (int d = 0; d < 3; d++) ke += 0.5 * lmp->atom->rmass[i] * lmp->atom->v[i][d] * lmp->atom->v[i][d];
+    return ke;
+  }
+};
+
+TEST_F(WireLoopTest, LoopAroundGrainsComesToRestAndTheFloorCarriesEverything)
+{
+  loop_around_balls();
+  run("run 6000");
+  // time averages over 1000 more steps
+  const int samples = 100;
+  double floor_z = 0.0, on_grains[3] = {0, 0, 0}, lowest = INFINITY;
+  for (int k = 0; k < samples; k++) {
+    run("run 10");
+    floor_z += fix_value("floor", 2) / samples;
+    for (int d = 0; d < 3; d++) on_grains[d] += fix_value("w", 7 + d) / samples;
+  }
+  for (int k = 1; k <= kNodes; k++) lowest = std::min(lowest, position(k)[2]);
+  const double wire = kNodes * kNodeMass, total = 4 * kBallMass + wire;
+  std::printf("[ wire loop ] floor %.10g (weight %.10g), wire on grains %.3g %.3g %.10g (wire weight %.8g)\n",
+              floor_z, total, on_grains[0], on_grains[1], on_grains[2], wire);
+  std::printf("[ wire loop ] kinetic energy: wire %.3g, balls %.3g; lowest node z %.6g, contacts %g\n",
+              kinetic_energy(true), kinetic_energy(false), lowest, fix_value("w", 4));
+  EXPECT_NEAR(floor_z / -total, 1.0, 1e-6);          // the floor carries balls + wire
+  EXPECT_NEAR(on_grains[2] / -wire, 1.0, 1e-6);      // the grains carry the wire
+  EXPECT_NEAR(on_grains[0], 0.0, 1e-6);
+  EXPECT_NEAR(on_grains[1], 0.0, 1e-6);
+  EXPECT_LT(kinetic_energy(true), 1e-10);
+  EXPECT_LT(kinetic_energy(false), 1e-10);
+  EXPECT_GT(lowest, 0.45);    // the loop stayed up, gripping the balls
 }
