@@ -14,10 +14,14 @@ if [ ! -f pile.restart ]; then
   "$lmp" -in in.pile -log pour.log -screen none -var steps 4000
   [ -f pile.restart ] || { echo "pour did not write pile.restart" >&2; exit 1; }
 fi
-echo "| tolerance | sweeps/step (mean) | residual reached (mean) | converged steps | max predicted overlap | min gap | seconds/step |"
-echo "|---|---|---|---|---|---|---|"
-for tol in 1e-2 1e-3 1e-4 1e-5 1e-6; do
-  "$lmp" -in "$here/in.settled" -log "settled.$tol.log" -screen none -var tolerance $tol -var steps $steps
-  seconds=$(awk '/^Loop time of/ {print $4 / $9}' "settled.$tol.log")
-  grep "^result" "settled.$tol.log" | awk -v s="$seconds" '{printf "| %s | %s | %s | %s | %s | %s | %.4f |\n", $3, $5, $7, $13, $9, $11, s}'
+for scene in settled loaded; do
+  echo
+  echo "$scene pile, $steps steps per row:"
+  echo "| tolerance | sweeps/step (mean) | residual reached (mean) | converged steps | max predicted overlap | min gap | seconds/step |"
+  echo "|---|---|---|---|---|---|---|"
+  for tol in 1e-2 1e-3 1e-4 1e-5 1e-6; do
+    "$lmp" -in "$here/in.$scene" -log "$scene.$tol.log" -screen none -var tolerance $tol -var steps $steps
+    seconds=$(awk '/^Loop time of/ {print $4 / $9}' "$scene.$tol.log")
+    grep "^result" "$scene.$tol.log" | awk -v s="$seconds" '{printf "| %s | %s | %s | %s | %s | %s | %.4f |\n", $3, $5, $7, $13, $9, $11, s}'
+  done
 done
