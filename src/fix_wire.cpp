@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <cstring>
 #include <set>
 
@@ -63,7 +64,10 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 
   int iarg = 3;
   while (iarg < narg) parse_option(narg, arg, iarg);
-  if (law.mu_s == 0.0 && law.mu_d > 0.0) law.mu_s = law.mu_d;
+  // One coefficient given: static = dynamic. (With mu_d left at 0, a contact would lose all
+  // friction after its first slip.)
+  if (mu_s_given && !mu_d_given) law.mu_d = law.mu_s;
+  if (mu_d_given && !mu_s_given) law.mu_s = law.mu_d;
   if (law.k_n > 0.0) {    // k_n = 0: no contacts at all, the other coefficients unused
     try {
       nscd::wire::validate(law);
@@ -101,8 +105,8 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   else if (key == "gamma_n") law.gamma_n = positive_or_zero(x);
   else if (key == "k_t") law.k_t = positive_or_zero(x);
   else if (key == "gamma_t") law.gamma_t = positive_or_zero(x);
-  else if (key == "mu_s") law.mu_s = positive_or_zero(x);
-  else if (key == "mu_d") law.mu_d = positive_or_zero(x);
+  else if (key == "mu_s") law.mu_s = positive_or_zero(x), mu_s_given = true;
+  else if (key == "mu_d") law.mu_d = positive_or_zero(x), mu_d_given = true;
   else if (key == "radius") wire_radius = positive_or_zero(x);
   else if (key == "damp") node_damping = positive_or_zero(x);
   else if (key == "dt_sp") {
@@ -133,6 +137,10 @@ int FixWire::setmask()
 
 void FixWire::init()
 {
+  for (int f = 0; f < modify->nfix; f++)
+    if (modify->fix[f] != this && dynamic_cast<FixWire *>(modify->fix[f]))
+      error->all(FLERR, "fix wire: only one fix wire may be defined ({} and {}); one fix handles "
+                 "all wire nodes and their contacts", modify->fix[f]->id, id);
   if (comm->nprocs > 1)
     error->all(FLERR, "fix wire runs on 1 MPI rank only in this version ({} ranks given): wire-wire "
                "contact pairs and the contact history are not distributed yet; run the wire deck "
@@ -513,12 +521,19 @@ bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &ener
   const nscd::wire::GrainMotion &m = motion[c.b1];
   const nscd::Pose pose = m.pose_at(tau);
   const nscd::Segment segment{vec3(x[c.a1]), vec3(x[c.a2]), wire_radius};
-  const auto contact = nscd::contact_segment_grain(segment, avec->shape_of(c.b1), pose, 0.0, workspace);
-  if (!contact || contact->gap >= 0.0) {
-    c.history = {};
-    return false;
+  std::optional<nscd::SegmentContact> contact;
+  nscd::wire::LeverWeights w;
+  try {
+    contact = nscd::contact_segment_grain(segment, avec->shape_of(c.b1), pose, 0.0, workspace);
+    if (!contact || contact->gap >= 0.0) {
+      c.history = {};
+      return false;
+    }
+    w = nscd::wire::lever_weights(contact->s_i);
+  } catch (std::exception &e) {
+    error->one(FLERR, "fix wire: contact of the element of atoms {}-{} with grain ID {} failed: {}",
+               atom->tag[c.a1], atom->tag[c.a2], atom->tag[c.b1], e.what());
   }
-  const nscd::wire::LeverWeights w = nscd::wire::lever_weights(contact->s_i);
   const Vec3 v_wire = w.on_a * vec3(&vbuf[3 * (size_t) c.a1]) + w.on_b * vec3(&vbuf[3 * (size_t) c.a2]);
   const Vec3 v_rel = v_wire - m.point_velocity(contact->point, tau);
   const nscd::wire::SoftContactForce r =

@@ -72,6 +72,7 @@ class FixWire : public Fix {
 
   // options
   nscd::wire::SoftContactLaw law;
+  bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
   double wire_radius = 0.0;
   double node_damping = 0.0;
   int requested_substeps = 0;    // 0: from dt_sp or from the stability limit

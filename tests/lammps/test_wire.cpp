@@ -461,7 +461,7 @@ class CrossingWiresTest : public WireTest {
   // Element A: atoms 1, 2 along x, held (not in the group). Element B: atoms 3, 4 along y,
   // crossing A at its middle and just touching it, pressed down by kNormal and pulled along
   // x by the variable fx (both split evenly over its two nodes).
-  void crossing()
+  void crossing(const std::string &friction = "mu_s " + num(kMuS) + " mu_d " + num(kMuD))
   {
     const std::vector<Point> atoms = {{-0.5, 0, 0, kMass}, {0.5, 0, 0, kMass},
                                       {0, -0.5, 2 * kRadius, kMass}, {0, 0.5, 2 * kRadius, kMass}};
@@ -471,7 +471,7 @@ class CrossingWiresTest : public WireTest {
     commands({"group wire id 3 4", "variable fx equal 0",
               "fix press wire addforce v_fx 0 " + num(-kNormal / 2),
               "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " gamma_n 1 k_t 1e4 "
-              "gamma_t 1 mu_s " + num(kMuS) + " mu_d " + num(kMuD)});
+              "gamma_t 1 " + friction});
   }
   // Mean of B's two nodes along axis d.
   double b_position(int d) { return 0.5 * (position(3)[d] + position(4)[d]); }
@@ -521,6 +521,23 @@ TEST_F(CrossingWiresTest, PressedWireStaysAtTheSpringOverlapSticksUntilMuSAndSli
   EXPECT_GT(x[2] - x[1], x[1] - x[0]);    // still sliding, faster and faster
   EXPECT_NEAR(friction / (kMuD * kNormal), 1.0, 1e-3);
   EXPECT_LT(deepest, 1.001 * kNormal / kN);    // no interpenetration beyond the spring's
+}
+
+// mu_s alone means mu_d = mu_s: after a slip, a pull below mu_s f_n lets the wire stick
+// again (with mu_d left at 0 it would slide on without friction).
+TEST_F(CrossingWiresTest, StaticCoefficientAloneAlsoActsWhileSliding)
+{
+  crossing("mu_s " + num(kMuS));
+  run("run 300");
+  pull(0.6 * kNormal);    // above mu_s f_n: B slips
+  run("run 40");
+  const double slipped = b_position(0);
+  EXPECT_GT(slipped, 1e-3);
+  pull(0.4 * kNormal);    // below: friction 0.5 f_n brakes it within a few steps
+  run("run 200");
+  const double before = b_position(0);
+  run("run 200");
+  EXPECT_NEAR(b_position(0), before, 1e-5);    // stuck again (no friction: moves ~0.8)
 }
 
 // ---------------------------------------------------------------- wire loop on grains
