@@ -215,12 +215,6 @@ void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
   }
 }
 
-}    // namespace geometry_detail
-
-namespace {
-
-using namespace geometry_detail;
-
 void check_activation(double activation)
 {
   if (!std::isfinite(activation) || activation < 0.0) {
@@ -230,6 +224,12 @@ void check_activation(double activation)
     throw ContactError(out.str());
   }
 }
+
+}    // namespace geometry_detail
+
+namespace {
+
+using namespace geometry_detail;
 
 void check_shape(const Spheropolyhedron &shape, const char *which)
 {

@@ -79,5 +79,8 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &input,
 void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
                        const Vec3 &origin, double length_scale, ContactSet &out);
 
+// Throws ContactError unless the activation distance is finite and >= 0.
+void check_activation(double activation);
+
 }    // namespace geometry_detail
 }    // namespace nscd

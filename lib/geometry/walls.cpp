@@ -20,16 +20,6 @@ namespace {
 
 using namespace geometry_detail;
 
-void check_activation(double activation)
-{
-  if (!std::isfinite(activation) || activation < 0.0) {
-    std::ostringstream out;
-    out << "contact activation distance " << activation
-        << " is invalid; give a finite distance >= 0 (0 reports touching contacts only)";
-    throw ContactError(out.str());
-  }
-}
-
 // The unit vector along v, or an error naming the wall's bad direction.
 Vec3 unit_direction(const Vec3 &v, const char *what)
 {
