@@ -458,3 +458,39 @@ TEST_F(NSCDTest, SmallPileComesToRestOnTheFloor)
   EXPECT_LT(fix_value("solver", 2), 0.01);                  // overlap < 1% of a grain
   EXPECT_EQ(lmp->atom->natoms, 27);
 }
+
+// A restart written on all ranks of this run continues on a single rank and follows the
+// continuation on all ranks (to the Gauss-Seidel ordering's round-off on a frictional stack).
+TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnOne)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+      "fix solver all nscd tolerance 1e-10 max_sweeps 5000"};
+  scene(0.5, "tolerance 1e-10 max_sweeps 5000");
+  for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.6 + 1.1 * k);    // falls, then rests
+  commands({"shapes assign all shape 1 density 1 orient random 3", "run 300",
+            "write_restart " + scratch("all_ranks.restart"), "run 200"});
+  std::vector<std::vector<double>> on_all_ranks;
+  for (tagint k = 1; k <= 4; k++) on_all_ranks.push_back(state_of(k));
+
+  // rank 0 alone reads the file and continues
+  MPI_Comm alone;
+  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
+  if (rank() == 0) {
+    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    auto *single = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
+    single->input->one("read_restart " + scratch("all_ranks.restart"));
+    for (auto &line : redefine) single->input->one(line);
+    single->input->one("run 200");
+    for (tagint k = 1; k <= 4; k++) {
+      const int i = single->atom->map(k);
+      ASSERT_GE(i, 0);
+      for (int d = 0; d < 3; d++)
+        EXPECT_NEAR(single->atom->x[i][d], on_all_ranks[k - 1][d], 1e-6) << "atom " << k;
+    }
+    delete single;
+    MPI_Comm_free(&alone);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+}
