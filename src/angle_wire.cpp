@@ -1,6 +1,7 @@
 /* angle_style wire: LAMMPS glue around nscd::wire::bending_node_forces. */
 
 #include "angle_wire.h"
+#include "nscd_arrays.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -14,10 +15,6 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
-
-namespace {
-nscd::Vec3 vec3(const double *a) { return nscd::Vec3(a[0], a[1], a[2]); }
-}    // namespace
 
 AngleWire::AngleWire(LAMMPS *lmp) : Angle(lmp) {}
 

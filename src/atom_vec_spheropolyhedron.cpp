@@ -6,6 +6,7 @@
 #include "atom_vec_hybrid.h"
 #include "error.h"
 #include "memory.h"
+#include "nscd_arrays.h"
 
 #include <cmath>
 #include <cstring>
@@ -197,8 +198,8 @@ AtomVecSpheropolyhedron *AtomVecSpheropolyhedron::find(LAMMPS *lmp, const char *
 nscd::Pose AtomVecSpheropolyhedron::pose(int i) const
 {
   nscd::Pose p;
-  p.position = nscd::Vec3(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
-  p.orientation = nscd::Quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
+  p.position = vec3(atom->x[i]);
+  p.orientation = quat_of(quat[i]);
   return p;
 }
 

@@ -1,6 +1,7 @@
 /* bond_style wire: LAMMPS glue around nscd::wire::axial_element_forces. */
 
 #include "bond_wire.h"
+#include "nscd_arrays.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -14,9 +15,6 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-nscd::Vec3 vec3(const double *a) { return nscd::Vec3(a[0], a[1], a[2]); }
-}    // namespace
 
 BondWire::BondWire(LAMMPS *lmp) : Bond(lmp) {}
 

@@ -12,6 +12,7 @@
 #include "memory.h"
 #include "domain.h"
 #include "modify.h"
+#include "nscd_arrays.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
 #include "pair_nscd.h"
@@ -31,15 +32,6 @@ enum Diagnostic {
   SWEEPS, RESIDUAL, MAX_INTERPENETRATION, CONTACTS, ACTIVE, STICKING, SLIDING, CONVERGED,
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
-
-nscd::Vec3 vec3(const double *a) { return nscd::Vec3(a[0], a[1], a[2]); }
-void store(const nscd::Vec3 &v, double *a)
-{
-  a[0] = v.x();
-  a[1] = v.y();
-  a[2] = v.z();
-}
-nscd::Quat quat_of(const double *q) { return nscd::Quat(q[0], q[1], q[2], q[3]); }
 
 // One warm-start record as written to restart files.
 struct StoredContact {

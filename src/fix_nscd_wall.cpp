@@ -4,6 +4,7 @@
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
+#include "nscd_arrays.h"
 #include "nscd_contact.h"
 #include "comm.h"
 #include "error.h"
@@ -119,8 +120,7 @@ void FixNSCDWall::setup(int /*vflag*/)
   tagint first_outside = MAXTAGINT, any_outside;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
-    const nscd::Vec3 x(atom->x[i][0], atom->x[i][1], atom->x[i][2]);
-    if (!inside(x)) first_outside = std::min(first_outside, atom->tag[i]);
+    if (!inside(vec3(atom->x[i]))) first_outside = std::min(first_outside, atom->tag[i]);
   }
   MPI_Allreduce(&first_outside, &any_outside, 1, MPI_LMP_TAGINT, MPI_MIN, world);
   if (any_outside != MAXTAGINT)

@@ -13,6 +13,7 @@
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "nscd_arrays.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -32,13 +33,6 @@ enum Diagnostic {
   GRAIN_FZ, DT_SP_STABLE
 };
 
-Vec3 vec3(const double *a) { return Vec3(a[0], a[1], a[2]); }
-void add_to(double *a, const Vec3 &v)
-{
-  a[0] += v.x();
-  a[1] += v.y();
-  a[2] += v.z();
-}
 
 // One contact history entry as written to restart files.
 struct StoredHistory {
