@@ -21,7 +21,6 @@
 #include <cmath>
 #include <optional>
 #include <cstring>
-#include <set>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -34,11 +33,52 @@ enum Diagnostic {
 };
 
 
-// One contact history entry as written to restart files.
+// One contact history as written to restart files and sent between ranks.
 struct StoredHistory {
   double key[4];    // tags, stored as doubles (exact up to 2^53)
   double history[nscd::wire::TangentialHistory::kNumDoubles];
 };
+constexpr int kStoredDoubles = sizeof(StoredHistory) / sizeof(double);
+
+void append_history(std::vector<double> &out, const FixWire::ContactKey &key,
+                    const nscd::wire::TangentialHistory &h)
+{
+  for (tagint t : key) out.push_back((double) t);
+  out.insert(out.end(), {h.xi[0], h.xi[1], h.xi[2], h.sliding});
+}
+
+FixWire::ContactKey key_of(const StoredHistory &s)
+{
+  return {(tagint) s.key[0], (tagint) s.key[1], (tagint) s.key[2], (tagint) s.key[3]};
+}
+
+nscd::wire::TangentialHistory history_of(const StoredHistory &s)
+{
+  nscd::wire::TangentialHistory h;
+  for (int d = 0; d < 3; d++) h.xi[d] = s.history[d];
+  h.sliding = s.history[3];
+  return h;
+}
+
+// The records of all ranks, in rank order: on every rank (to_all) or on rank 0 only.
+std::vector<StoredHistory> gather_records(const std::vector<double> &mine, MPI_Comm world, bool to_all)
+{
+  int nprocs, me;
+  MPI_Comm_size(world, &nprocs);
+  MPI_Comm_rank(world, &me);
+  const int count = (int) mine.size();
+  std::vector<int> counts(nprocs), offsets(nprocs, 0);
+  if (to_all) MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  else MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  for (int r = 1; r < nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<StoredHistory> all((to_all || me == 0) ? (offsets.back() + counts.back()) / kStoredDoubles : 0);
+  double *into = reinterpret_cast<double *>(all.data());
+  if (to_all)
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, into, counts.data(), offsets.data(), MPI_DOUBLE, world);
+  else
+    MPI_Gatherv(mine.data(), count, MPI_DOUBLE, into, counts.data(), offsets.data(), MPI_DOUBLE, 0, world);
+  return all;
+}
 }    // namespace
 
 /* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [radius R]
@@ -135,10 +175,6 @@ void FixWire::init()
     if (modify->fix[f] != this && dynamic_cast<FixWire *>(modify->fix[f]))
       error->all(FLERR, "fix wire: only one fix wire may be defined ({} and {}); one fix handles "
                  "all wire nodes and their contacts", modify->fix[f]->id, id);
-  if (comm->nprocs > 1)
-    error->all(FLERR, "fix wire runs on 1 MPI rank only in this version ({} ranks given): wire-wire "
-               "contact pairs and the contact history are not distributed yet; run the wire deck "
-               "on 1 rank", comm->nprocs);
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");
@@ -244,6 +280,7 @@ void FixWire::plan_substeps()
 
 void FixWire::setup(int /*vflag*/)
 {
+  gather_elements();
   check_ghost_cutoff();
   rescale_states(plan.dt_sp);
   diagnostics[SUBSTEPS] = plan.substeps;
@@ -257,23 +294,64 @@ void FixWire::reset_dt()
   rescale_states(plan.dt_sp);
 }
 
-/* Periodic images of grains and nodes must be ghosts when a wire element reaches them. */
-void FixWire::check_ghost_cutoff()
+/* The wire's topology on every rank: a contact pair is found on the rank owning the first
+   node of its lower element, and that rank must see the other element whatever rank
+   stores its bond. newton_bond on: each element is in exactly one rank's bond list. */
+void FixWire::gather_elements()
 {
-  if (!domain->xperiodic && !domain->yperiodic && !domain->zperiodic) return;
-  double reach = 0.0, all;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (avec->shape[i] != 0) reach = std::max(reach, avec->radius[i]);
-  MPI_Allreduce(&reach, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  std::vector<tagint> mine;
   double longest = 0.0;
   if (bond)
-    for (int t = 1; t <= atom->nbondtypes; t++) longest = std::max(longest, bond->rest_length(t));
-  const double needed = all + 1.5 * longest + wire_radius;
+    for (int n = 0; n < neighbor->nbondlist; n++) {
+      const int *b = neighbor->bondlist[n];
+      const tagint p = atom->tag[b[0]], q = atom->tag[b[1]];
+      mine.insert(mine.end(), {std::min(p, q), std::max(p, q)});
+      longest = std::max({longest, bond->rest_length(b[2]), (vec3(atom->x[b[0]]) - vec3(atom->x[b[1]])).norm()});
+    }
+  MPI_Allreduce(&longest, &longest_element, 1, MPI_DOUBLE, MPI_MAX, world);
+  int count = (int) mine.size();
+  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  for (int r = 1; r < comm->nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<tagint> all(offsets.back() + counts.back());
+  MPI_Allgatherv(mine.data(), count, MPI_LMP_TAGINT, all.data(), counts.data(), offsets.data(),
+                 MPI_LMP_TAGINT, world);
+  elements.clear();
+  for (size_t k = 0; k < all.size(); k += 2) elements.push_back({all[k], all[k + 1]});
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+}
+
+/* True if nodes p and q are the same node or the two ends of one element. */
+bool FixWire::joined(tagint p, tagint q) const
+{
+  return p == q || std::binary_search(elements.begin(), elements.end(),
+                                      std::array<tagint, 2>{std::min(p, q), std::max(p, q)});
+}
+
+/* The rank computing a contact (owner of the first node of the lower element) must hold as
+   ghosts every grain and node that contact can reach within a step: from that node, a
+   grain's centre lies within L + r_w + R + skin and the other element's nodes within
+   2 L + 2 r_w + skin. Needed across ranks and across periodic boundaries. */
+void FixWire::check_ghost_cutoff()
+{
+  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
+  if (!periodic && comm->nprocs == 1) return;
+  if (elements.empty() || law.k_n == 0.0) return;    // no contacts: LAMMPS checks the bonds
+  double reach = 0.0, largest_grain;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (avec->shape[i] != 0) reach = std::max(reach, avec->radius[i]);
+  MPI_Allreduce(&reach, &largest_grain, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double L = longest_element;
+  const double needed = std::max(largest_grain + L + wire_radius, 2.0 * L + 2.0 * wire_radius) +
+      neighbor->skin;
   const double have = std::max(neighbor->cutneighmax, comm->cutghostuser);
   if (have < needed)
-    error->all(FLERR, "fix wire: ghost cutoff {:.6g} is below the reach {:.6g} of a wire element "
-               "(largest grain radius + 1.5 element lengths + wire radius) across a periodic "
-               "boundary; use 'comm_modify cutoff {:.6g}'", have, needed, needed);
+    error->all(FLERR, "fix wire: ghost cutoff {:.6g} is below the reach {:.6g} of a wire contact "
+               "(max(largest grain radius {:.6g} + L + r_w, 2 L + 2 r_w) + skin, with element length "
+               "L = {:.6g}, r_w = {:.6g}) across {}; use 'comm_modify cutoff {:.6g}'", have, needed,
+               largest_grain, L, wire_radius, comm->nprocs > 1 ? "MPI ranks" : "a periodic boundary",
+               needed);
 }
 
 void FixWire::rescale_states(double new_dt)
@@ -298,6 +376,7 @@ void FixWire::post_force(int /*vflag*/)
   vbuf.assign(3 * (size_t) ntotal, 0.0);
   load_nodes();
   measure_external_forces();
+  hand_over_histories();
   find_candidates();
   grain_forces.reset(ntotal);
   nscd::wire::run_subcycle(plan, corrector, nodes, grain_forces,
@@ -308,6 +387,14 @@ void FixWire::post_force(int /*vflag*/)
   store_nodes();
   hand_forces_to_grains();
   keep_histories();
+  sum_diagnostics_over_ranks();
+}
+
+/* Energies and contact counts of the last substep, summed over the ranks. */
+void FixWire::sum_diagnostics_over_ranks()
+{
+  static_assert(E_AXIAL == 0 && N_WIRE_GRAIN == 4, "the summed diagnostics come first");
+  MPI_Allreduce(MPI_IN_PLACE, &diagnostics[E_AXIAL], N_WIRE_GRAIN + 1, MPI_DOUBLE, MPI_SUM, world);
 }
 
 /* The owned wire nodes (shape 0) into the node set: Gear state from the per-atom array, with
@@ -433,50 +520,19 @@ double FixWire::add_elastic_forces(double *energy_axial, double *energy_bending)
 /* ---------------------------------------------------------------------- contacts */
 
 /* Element pairs and element-grain pairs close enough to touch during this step (bounding
-   spheres plus the neighbour skin), built once per LAMMPS step. Elements sharing a node or
+   spheres plus the neighbour skin), found once per LAMMPS step on a grid. Owner rule: a
+   pair is computed by the rank owning the first node of its lower element (elements
+   ordered by their tags), with the other bodies' closest images; so each pair is computed
+   exactly once over all ranks, and across periodic boundaries. Elements sharing a node or
    joined by one element are skipped: their contact is the wire's own bending. */
 void FixWire::find_candidates()
 {
+  share_grain_velocities();
   std::vector<Candidate> found;
-  if (law.k_n > 0.0 && bond) {
-    double **x = atom->x;
-    tagint *tag = atom->tag;
-    const int ntotal = atom->nlocal + atom->nghost;
-    const double margin = neighbor->skin;
-    struct Element { int a, b; Vec3 centre; double half; };
-    std::vector<Element> elements;
-    std::set<std::pair<tagint, tagint>> linked;
-    for (int n = 0; n < neighbor->nbondlist; n++) {
-      int a = neighbor->bondlist[n][0], b = neighbor->bondlist[n][1];
-      if (tag[a] > tag[b]) std::swap(a, b);
-      const Vec3 xa = vec3(x[a]), xb = vec3(x[b]);
-      elements.push_back({a, b, 0.5 * (xa + xb), 0.5 * (xb - xa).norm()});
-      linked.insert({tag[a], tag[b]});
-    }
-    auto joined = [&](tagint p, tagint q) {
-      return p == q || linked.count({std::min(p, q), std::max(p, q)}) > 0;
-    };
-    for (const Element &e : elements) {
-      for (int j = 0; j < ntotal; j++) {
-        if (avec->shape[j] == 0) continue;
-        const double reach = e.half + wire_radius + avec->radius[j] + margin;
-        if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) continue;
-        found.push_back({e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
-      }
-    }
-    for (size_t p = 0; p < elements.size(); p++)
-      for (size_t q = p + 1; q < elements.size(); q++) {
-        const Element *A = &elements[p], *B = &elements[q];
-        const tagint ta[2] = {tag[A->a], tag[A->b]}, tb[2] = {tag[B->a], tag[B->b]};
-        bool near = false;
-        for (tagint s : ta)
-          for (tagint t : tb) near = near || joined(s, t);
-        if (near) continue;
-        const double reach = A->half + B->half + 2.0 * wire_radius + margin;
-        if ((A->centre - B->centre).squaredNorm() > reach * reach) continue;
-        if (std::make_pair(tb[0], tb[1]) < std::make_pair(ta[0], ta[1])) std::swap(A, B);
-        found.push_back({A->a, A->b, B->a, B->b, {tag[A->a], tag[A->b], tag[B->a], tag[B->b]}, {}});
-      }
+  if (law.k_n > 0.0 && !elements.empty()) {
+    locate_element_images();
+    find_wire_grain_candidates(found);
+    find_wire_wire_candidates(found);
   }
   for (Candidate &c : found) {
     const auto it = histories.find(c.key);
@@ -493,6 +549,126 @@ void FixWire::find_candidates()
       motion[j].velocity = vec3(atom->v[j]);
       motion[j].angular_velocity = vec3(avec->omega[j]);
     }
+}
+
+/* Every copy of every element whose nodes this rank holds; images[k].a < nlocal marks the
+   copies this rank computes contacts for. */
+void FixWire::locate_element_images()
+{
+  images.clear();
+  double **x = atom->x;
+  const int ntotal = atom->nlocal + atom->nghost;
+  for (int i = 0; i < ntotal; i++) {
+    if (avec->shape[i] != 0) continue;
+    const std::array<tagint, 2> from{atom->tag[i], 0}, to{atom->tag[i], MAXTAGINT};
+    const auto first = std::lower_bound(elements.begin(), elements.end(), from);
+    const auto last = std::upper_bound(first, elements.end(), to);
+    for (auto e = first; e != last; ++e) {
+      const int j = domain->closest_image(i, atom->map((*e)[1]));
+      if (j < 0) {
+        if (i < atom->nlocal)
+          error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank "
+                     "owning node ID {}; increase the ghost cutoff with 'comm_modify cutoff'",
+                     (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
+        continue;
+      }
+      const Vec3 xa = vec3(x[i]), xb = vec3(x[j]);
+      images.push_back({i, j, (int) (e - elements.begin()), 0.5 * (xa + xb), 0.5 * (xb - xa).norm()});
+    }
+  }
+}
+
+void FixWire::find_wire_grain_candidates(std::vector<Candidate> &found)
+{
+  double **x = atom->x;
+  tagint *tag = atom->tag;
+  const double margin = neighbor->skin;
+  grain_atom.clear();
+  std::vector<Vec3> centres;
+  double largest = 0.0, longest_half = 0.0;
+  for (int j = 0; j < atom->nlocal + atom->nghost; j++)
+    if (avec->shape[j] != 0) {
+      grain_atom.push_back(j);
+      centres.push_back(vec3(x[j]));
+      largest = std::max(largest, avec->radius[j]);
+    }
+  if (centres.empty()) return;
+  for (const ElementImage &e : images) longest_half = std::max(longest_half, e.half);
+  grain_grid.build(centres, 2.0 * longest_half + wire_radius + largest + margin);
+  for (const ElementImage &e : images) {
+    if (e.a >= atom->nlocal) continue;
+    grain_grid.for_each_near(e.centre, e.half + wire_radius + largest + margin, [&](int g) {
+      const int j = grain_atom[g];
+      const double reach = e.half + wire_radius + avec->radius[j] + margin;
+      if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) return;
+      found.push_back({e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
+    });
+  }
+}
+
+void FixWire::find_wire_wire_candidates(std::vector<Candidate> &found)
+{
+  tagint *tag = atom->tag;
+  const double margin = neighbor->skin;
+  std::vector<Vec3> centres;
+  double longest_half = 0.0;
+  for (const ElementImage &e : images) {
+    centres.push_back(e.centre);
+    longest_half = std::max(longest_half, e.half);
+  }
+  image_grid.build(centres, 4.0 * longest_half + 2.0 * wire_radius + margin);
+  for (const ElementImage &A : images) {
+    if (A.a >= atom->nlocal) continue;
+    const tagint ta[2] = {tag[A.a], tag[A.b]};
+    image_grid.for_each_near(A.centre, A.half + longest_half + 2.0 * wire_radius + margin, [&](int k) {
+      const ElementImage &B = images[k];
+      if (B.element <= A.element) return;    // the pair belongs to the lower element's owner
+      const double reach = A.half + B.half + 2.0 * wire_radius + margin;
+      if ((A.centre - B.centre).squaredNorm() > reach * reach) return;
+      const tagint tb[2] = {tag[B.a], tag[B.b]};
+      for (tagint s : ta)
+        for (tagint t : tb)
+          if (joined(s, t)) return;
+      found.push_back({A.a, A.b, B.a, B.b, {ta[0], ta[1], tb[0], tb[1]}, {}});
+    });
+  }
+}
+
+/* Grains' velocities and angular velocities to their ghost copies: the subcycle moves
+   ghost grains rigidly over the step (LAMMPS sends ghost velocities only with
+   'comm_modify vel yes'). */
+void FixWire::share_grain_velocities()
+{
+  comm_mode = Comm::grain_velocity;
+  comm->forward_comm_fix(this, 6);
+}
+
+/* After atoms have moved between ranks, each contact history goes to the rank that now
+   computes its contact: the owner of the key's first node. Only histories whose node left
+   travel (one gather over the ranks), and only on steps with a new neighbour build. */
+void FixWire::hand_over_histories()
+{
+  if (neighbor->lastcall == histories_placed_at) return;
+  histories_placed_at = neighbor->lastcall;
+  auto owned_here = [&](tagint t) {
+    const int i = atom->map(t);
+    return i >= 0 && i < atom->nlocal;
+  };
+  // After read_restart every rank holds every history: keep the own ones.
+  const bool send = comm->nprocs > 1 && !histories_on_every_rank;
+  std::vector<double> leaving;
+  for (auto it = histories.begin(); it != histories.end();) {
+    if (owned_here(it->first[0])) {
+      ++it;
+      continue;
+    }
+    if (send) append_history(leaving, it->first, it->second);
+    it = histories.erase(it);
+  }
+  histories_on_every_rank = false;
+  if (!send) return;
+  for (const StoredHistory &h : gather_records(leaving, world, /*to_all=*/true))
+    if (owned_here((tagint) h.key[0])) histories[key_of(h)] = history_of(h);
 }
 
 void FixWire::add_contact_forces(double tau, double dt)
@@ -615,6 +791,14 @@ double FixWire::compute_vector(int n)
 
 int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
+  if (comm_mode == Comm::grain_velocity) {
+    int m = 0;
+    for (int k = 0; k < n; k++) {
+      for (int d = 0; d < 3; d++) buf[m++] = atom->v[list[k]][d];
+      for (int d = 0; d < 3; d++) buf[m++] = avec->omega[list[k]][d];
+    }
+    return m;
+  }
   double shift[3] = {0.0, 0.0, 0.0};
   if (pbc_flag) {
     shift[0] = pbc[0] * domain->xprd;
@@ -637,6 +821,13 @@ int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int 
 void FixWire::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (comm_mode == Comm::grain_velocity) {
+    for (int i = first; i < first + n; i++) {
+      for (int d = 0; d < 3; d++) atom->v[i][d] = buf[m++];
+      for (int d = 0; d < 3; d++) avec->omega[i][d] = buf[m++];
+    }
+    return;
+  }
   for (int i = first; i < first + n; i++) {
     for (int d = 0; d < 3; d++) atom->x[i][d] = buf[m++];
     for (int d = 0; d < 3; d++) vbuf[3 * (size_t) i + d] = buf[m++];
@@ -714,38 +905,36 @@ int FixWire::maxsize_restart()
   return kGearColumns + 1;
 }
 
-/* Global restart: the step of the stored Gear states and the contact histories. */
+/* Global restart: the step of the stored Gear states and the contact histories of all
+   ranks. */
 void FixWire::write_restart(FILE *fp)
 {
-  std::vector<double> data{state_dt, (double) histories.size()};
-  for (const auto &entry : histories) {
-    for (tagint t : entry.first) data.push_back((double) t);
-    const nscd::wire::TangentialHistory &h = entry.second;
-    data.insert(data.end(), {h.xi[0], h.xi[1], h.xi[2], h.sliding});
-  }
+  std::vector<double> mine;
+  for (const auto &entry : histories) append_history(mine, entry.first, entry.second);
+  const std::vector<StoredHistory> all = gather_records(mine, world, /*to_all=*/false);
   if (comm->me == 0) {
-    const int size = (int) (data.size() * sizeof(double));
+    const double header[2] = {state_dt, (double) all.size()};
+    const int size = (int) (sizeof(header) + all.size() * sizeof(StoredHistory));
     fwrite(&size, sizeof(int), 1, fp);
-    fwrite(data.data(), sizeof(double), data.size(), fp);
+    fwrite(header, sizeof(double), 2, fp);
+    fwrite(all.data(), sizeof(StoredHistory), all.size(), fp);
   }
 }
 
 void FixWire::restart(char *buf)
 {
-  const double *data = reinterpret_cast<const double *>(buf);
-  state_dt = data[0];
-  const size_t count = (size_t) data[1];
-  const size_t width = sizeof(StoredHistory) / sizeof(double);
+  // read_restart hands every rank the whole block; hand_over_histories() keeps the own ones.
+  double header[2];
+  std::memcpy(header, buf, sizeof(header));
+  state_dt = header[0];
+  const size_t count = (size_t) header[1];
   histories.clear();
   for (size_t k = 0; k < count; k++) {
-    const double *row = data + 2 + k * width;
-    ContactKey key;
-    for (int d = 0; d < 4; d++) key[d] = (tagint) row[d];
-    nscd::wire::TangentialHistory h;
-    for (int d = 0; d < 3; d++) h.xi[d] = row[4 + d];
-    h.sliding = row[7];
-    histories[key] = h;
+    StoredHistory h;
+    std::memcpy(&h, buf + sizeof(header) + k * sizeof(StoredHistory), sizeof(StoredHistory));
+    histories[key_of(h)] = history_of(h);
   }
+  histories_on_every_rank = true;
 }
 
 double FixWire::memory_usage()

@@ -3,7 +3,8 @@
    LAMMPS step (lib/wire/subcycle.h), with soft wire-wire and wire-grain contacts
    (lib/wire/soft_contact.h, lib/geometry). The wire->grain forces and torques averaged over
    the substeps are added to the grains' f and torque in post_force, so fix nscd takes them
-   as external forces. See doc/fix_wire.md. */
+   as external forces. Runs on any number of MPI ranks: each contact is computed on the rank
+   owning the first node of its lower element (see find_candidates). See doc/fix_wire.md. */
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -17,6 +18,7 @@ FixStyle(wire,FixWire);
 #include "fix.h"
 
 #include "geometry/contact.h"
+#include "geometry/point_grid.h"
 #include "wire/soft_contact.h"
 #include "wire/stability.h"
 #include "wire/subcycle.h"
@@ -97,7 +99,24 @@ class FixWire : public Fix {
   std::vector<nscd::wire::GrainMotion> motion;    // per local grain
   nscd::wire::GrainForceAccumulator grain_forces;
   nscd::ContactWorkspace workspace;
-  enum class Comm { node_state, node_force, grain_force } comm_mode = Comm::node_state;
+  enum class Comm { node_state, grain_velocity, node_force, grain_force } comm_mode = Comm::node_state;
+
+  // Wire topology, the same on every rank: the elements as (lower tag, higher tag), sorted.
+  // Gathered at setup from the bond lists of all ranks.
+  std::vector<std::array<tagint, 2>> elements;
+  double longest_element = 0.0;    // rest or current, the longer, at setup
+
+  // One copy of an element on this rank: nodes a (first node, or an image of it) and b
+  // (the image of the second node closest to a).
+  struct ElementImage {
+    int a, b;
+    int element;    // index in `elements`
+    nscd::Vec3 centre;
+    double half;    // half length
+  };
+  std::vector<ElementImage> images;
+  nscd::PointGrid image_grid, grain_grid;
+  std::vector<int> grain_atom;    // grain_grid point -> local atom index
 
   struct Candidate {
     int a1, a2;    // element A's nodes (local indices)
@@ -107,6 +126,8 @@ class FixWire : public Fix {
   };
   std::vector<Candidate> candidates;
   std::map<ContactKey, nscd::wire::TangentialHistory> histories;    // between steps
+  bigint histories_placed_at = -1;    // neighbor build after which histories were handed over
+  bool histories_on_every_rank = false;    // just read from a restart file
 
   // diagnostics of the last substep; see compute_vector()
   std::array<double, 11> diagnostics{};
@@ -122,7 +143,15 @@ class FixWire : public Fix {
   void load_nodes();
   void store_nodes();
   void measure_external_forces();
+  void gather_elements();
+  bool joined(tagint p, tagint q) const;
+  void hand_over_histories();
+  void share_grain_velocities();
   void find_candidates();
+  void locate_element_images();
+  void find_wire_grain_candidates(std::vector<Candidate> &found);
+  void find_wire_wire_candidates(std::vector<Candidate> &found);
+  void sum_diagnostics_over_ranks();
   void substep_forces(const nscd::wire::SubstepInfo &info, const std::vector<nscd::Vec3> &x,
                       const std::vector<nscd::Vec3> &v, std::vector<nscd::Vec3> &f);
   void share_node_state();
