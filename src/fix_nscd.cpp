@@ -200,6 +200,7 @@ void FixNSCD::final_integrate()
   comm->forward_comm_fix(this, 12);
   build_bodies();
   gather_contacts();
+  count_shares();
   solve();
   move_grains();
   hand_back_forces();
@@ -279,6 +280,28 @@ int FixNSCD::boundary_of(size_t contact) const
   return 0;
 }
 
+/* Mass splitting (nscd::SolverBody::share): how many copies of each body, owner and ghosts
+   over all ranks, carry contacts. Each copy counts 1 if a contact here touches it; reverse
+   communication sums the counts into the owner (through intermediate ghosts), forward
+   communication hands the owner's total to every ghost. A body every rank holds (the
+   plate) sums over the ranks. */
+void FixNSCD::count_shares()
+{
+  for (nscd::SolverBody &body : problem.bodies) body.share = 0.0;
+  for (const nscd::Contact &c : problem.contacts) {
+    problem.bodies[c.body_i].share = 1.0;
+    if (c.body_j >= 0) problem.bodies[c.body_j].share = 1.0;
+  }
+  exchange_mode = Exchange::share;
+  comm->reverse_comm_fix(this, 1);
+  comm->forward_comm_fix(this, 1);
+  for (int b : global_bodies) {
+    double mine = problem.bodies[b].share;
+    MPI_Allreduce(&mine, &problem.bodies[b].share, 1, MPI_DOUBLE, MPI_SUM, world);
+  }
+  for (nscd::SolverBody &body : problem.bodies) body.share = std::max(1.0, body.share);
+}
+
 /* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of
    ghost grains go to their owners and the owners' velocities back to all copies, so every
    rank iterates on the same global velocities. The convergence test is global. */
@@ -314,6 +337,15 @@ void FixNSCD::exchange_velocities()
 {
   exchange_mode = Exchange::correction;
   comm->reverse_comm_fix(this, 6);
+  // The owners now hold the sum of their copies' corrections; with mass splitting their
+  // velocity changes by the mean.
+  for (int b = 0; b < atom->nlocal; b++) {
+    nscd::SolverBody &body = problem.bodies[b];
+    if (body.share == 1.0) continue;
+    const double excess = 1.0 - 1.0 / body.share;
+    body.velocity -= excess * problem.velocity_correction(b);
+    body.angular_velocity -= excess * problem.angular_velocity_correction(b);
+  }
   exchange_mode = Exchange::velocity;
   comm->forward_comm_fix(this, 6);
   // A body every rank holds takes the corrections of all ranks' contacts.
@@ -327,8 +359,8 @@ void FixNSCD::exchange_velocities()
     }
     MPI_Allreduce(mine, all, 6, MPI_DOUBLE, MPI_SUM, world);
     for (int d = 0; d < 3; d++) {
-      body.velocity[d] += all[d] - mine[d];
-      body.angular_velocity[d] += all[3 + d] - mine[3 + d];
+      body.velocity[d] += all[d] / body.share - mine[d];
+      body.angular_velocity[d] += all[3 + d] / body.share - mine[3 + d];
     }
   }
   problem.mark_synchronised();
@@ -492,6 +524,10 @@ double FixNSCD::compute_vector(int n)
 int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   int m = 0;
+  if (exchange_mode == Exchange::share) {
+    for (int k = 0; k < n; k++) buf[m++] = problem.bodies[list[k]].share;
+    return m;
+  }
   for (int k = 0; k < n; k++) {
     const int i = list[k];
     if (exchange_mode == Exchange::state) {
@@ -509,6 +545,10 @@ int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
 void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (exchange_mode == Exchange::share) {
+    for (int i = first; i < first + n; i++) problem.bodies[i].share = buf[m++];
+    return;
+  }
   for (int i = first; i < first + n; i++) {
     if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
@@ -532,6 +572,10 @@ int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
       }
     return m;
   }
+  if (exchange_mode == Exchange::share) {
+    for (int i = first; i < first + n; i++) buf[m++] = problem.bodies[i].share;
+    return m;
+  }
   for (int i = first; i < first + n; i++) {
     const nscd::Vec3 dv = problem.velocity_correction(i), dw = problem.angular_velocity_correction(i);
     for (int d = 0; d < 3; d++) buf[m++] = dv[d];
@@ -546,6 +590,10 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
   if (exchange_mode == Exchange::virial) {
     for (int k = 0; k < n; k++)
       for (int c = 0; c < 6; c++) vatom[list[k]][c] += buf[m++];
+    return;
+  }
+  if (exchange_mode == Exchange::share) {
+    for (int k = 0; k < n; k++) problem.bodies[list[k]].share += buf[m++];
     return;
   }
   for (int k = 0; k < n; k++) {

@@ -62,7 +62,7 @@ class FixNSCD : public Fix {
   nscd::WarmStartCache warm_start;
   std::vector<nscd::Contact> restored_contacts;    // warm start read from a restart file
 
-  enum class Exchange { state, correction, velocity, virial } exchange_mode = Exchange::state;
+  enum class Exchange { state, share, correction, velocity, virial } exchange_mode = Exchange::state;
 
   // diagnostics of the last step
   nscd::SolveReport report;
@@ -76,6 +76,7 @@ class FixNSCD : public Fix {
   void check_no_points_in_group();
   void build_bodies();
   void gather_contacts();
+  void count_shares();
   void solve();
   void exchange_velocities();
   nscd::ResidualTerms global_terms() const;

@@ -80,6 +80,9 @@ void validate_body(const SolverBody &body, std::size_t index)
                       std::to_string(body.inv_mass_axes.y()) + ", " +
                       std::to_string(body.inv_mass_axes.z()) +
                       ") must be finite and >= 0 (1 = free, 0 = locked axis)");
+  if (!(body.share >= 1.0) || !std::isfinite(body.share))
+    throw SolverError(label + ": share " + std::to_string(body.share) +
+                      " must be finite and >= 1 (the number of copies carrying contacts)");
   if (!body.inv_inertia.allFinite() || !body.velocity.allFinite() ||
       !body.angular_velocity.allFinite() || !body.position.allFinite() ||
       !body.external_impulse.allFinite() || !body.external_angular_impulse.allFinite())
@@ -198,9 +201,10 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
   row.j = contact.body_j;
   row.mu = contact.friction;
   row.frame = contact_frame(contact.normal.normalized());
-  row.inv_mass_i = body_i.inv_mass * body_i.inv_mass_axes;
+  // mass splitting: this copy's contacts see the body share times lighter
+  row.inv_mass_i = body_i.share * body_i.inv_mass * body_i.inv_mass_axes;
   row.angular_i = -row.frame * cross_matrix(contact.point - body_i.position);
-  row.spin_i = body_i.inv_inertia * row.angular_i.transpose();
+  row.spin_i = body_i.share * body_i.inv_inertia * row.angular_i.transpose();
   row.delassus = linear_delassus(row.frame, row.inv_mass_i) + row.angular_i * row.spin_i;
   Vec3 u_start = row.frame * body_i.velocity + row.angular_i * body_i.angular_velocity;
 
@@ -211,9 +215,9 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
     row.offset = -(row.frame * contact.wall_velocity);
   } else {
     const SolverBody &body_j = bodies[row.j];
-    row.inv_mass_j = body_j.inv_mass * body_j.inv_mass_axes;
+    row.inv_mass_j = body_j.share * body_j.inv_mass * body_j.inv_mass_axes;
     row.angular_j = -row.frame * cross_matrix(contact.point - body_j.position);
-    row.spin_j = body_j.inv_inertia * row.angular_j.transpose();
+    row.spin_j = body_j.share * body_j.inv_inertia * row.angular_j.transpose();
     row.delassus += linear_delassus(row.frame, row.inv_mass_j) + row.angular_j * row.spin_j;
     row.offset.setZero();
     u_start -= row.frame * body_j.velocity + row.angular_j * body_j.angular_velocity;

@@ -12,7 +12,8 @@
 //   } until reduced terms.residual() <= tolerance or max_sweeps;
 //   problem.finish();                          // impulses back into contacts
 // exchange(): reverse communication adds each ghost's velocity_correction() and
-// angular_velocity_correction() to its owner's velocity, forward communication copies the
+// angular_velocity_correction() to its owner's velocity, the owner divides the summed
+// correction by its share (see SolverBody::share), forward communication copies the
 // owners' velocities to their ghosts, then every rank calls mark_synchronised().
 // Ghost copies must enter prepare() with the same velocity and external impulses as
 // their owners, so that every rank starts from the same free velocity.
@@ -56,6 +57,14 @@ struct SolverBody {
   double inv_mass = 0.0;
   Vec3 inv_mass_axes = Vec3::Ones();      // factors of inv_mass per world axis, >= 0 (1 or 0)
   Mat3 inv_inertia = Mat3::Zero();         // world frame, see world_inverse_inertia()
+  // Mass splitting under domain decomposition: the number of copies of this body (owner and
+  // ghosts, over all ranks) that carry contacts. Each copy's contacts see the body with
+  // inverse mass and inertia times `share`, and an exchange averages the copies'
+  // corrections instead of summing them. The sum of their effects is then exactly
+  // M^-1 times the sum of all impulses, so a converged solution is the whole system's; with
+  // plain summing, k copies each stopping the same body overshoot k-fold and the sweeps
+  // diverge for k >= 3 (doc/nscd_solver.md). 1 everywhere on one rank without images.
+  double share = 1.0;
 };
 
 // Persistent identity of a contact for warm starting: the two bodies' global ids (tags)

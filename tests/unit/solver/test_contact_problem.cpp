@@ -756,3 +756,109 @@ TEST(ContactProblem, CheckEverySweepsGivesTheSameAnswerWithFewerResiduals)
   column.stack({1.0, 1.0, 1.0}, Vec3(0.5, 0.5, 0.5));
   EXPECT_EQ(column.step(sparse, options).sweeps, 10);
 }
+
+namespace {
+// A ball resting on four fixed balls (a pyramid's top) with each of its four contacts on a
+// different emulated rank, as when a 2 x 2 decomposition cuts through its centre. Every
+// rank holds all bodies; `share` is the ball's SolverBody::share on every rank. Returns the
+// residual after `max_sweeps` (or less once converged) and the ranks' summed impulses.
+struct SplitResult {
+  double residual = 0.0;
+  int sweeps = 0;
+  Vec3 total_impulse = Vec3::Zero();
+};
+
+SplitResult ball_on_four_balls_split_over_four_ranks(double share, int max_sweeps)
+{
+  SolverOptions options = tight_options();
+  Sphere top;
+  top.pose.position = Vec3(0, 0, std::sqrt(0.5));
+  ContactProblem whole;
+  whole.bodies.push_back(solver_body(top, Vec3(0, 0, -kGravity), options.dt));
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 below(k % 2 ? 0.5 : -0.5, k / 2 ? 0.5 : -0.5, 0.0);
+    SolverBody fixed;    // infinite mass
+    fixed.position = below;
+    whole.bodies.push_back(fixed);
+    Contact c;
+    c.body_i = 0;
+    c.body_j = k + 1;
+    c.normal = (top.pose.position - below).normalized();
+    c.point = below + 0.5 * c.normal;
+    c.friction = 0.5;
+    c.key = {0, k + 1, 0};
+    whole.contacts.push_back(c);
+  }
+  whole.bodies[0].share = share;
+  std::vector<ContactProblem> ranks(4);
+  for (int r = 0; r < 4; ++r) {
+    ranks[r].bodies = whole.bodies;
+    ranks[r].contacts = {whole.contacts[r]};
+  }
+  // rank 0 owns the ball: it sums the four copies' corrections and divides by the share
+  const auto exchange = [&]() {
+    Vec3 dv = Vec3::Zero(), dw = Vec3::Zero();
+    for (ContactProblem &rank : ranks) {
+      dv += rank.velocity_correction(0);
+      dw += rank.angular_velocity_correction(0);
+    }
+    const Vec3 v = ranks[0].bodies[0].velocity - ranks[0].velocity_correction(0) + dv / share;
+    const Vec3 w = ranks[0].bodies[0].angular_velocity - ranks[0].angular_velocity_correction(0) + dw / share;
+    for (ContactProblem &rank : ranks) {
+      rank.bodies[0].velocity = v;
+      rank.bodies[0].angular_velocity = w;
+      rank.mark_synchronised();
+    }
+  };
+  for (ContactProblem &rank : ranks) rank.prepare(options);
+  exchange();
+  SplitResult result;
+  result.residual = 1.0;
+  while (result.residual > options.tolerance && result.sweeps < max_sweeps) {
+    for (ContactProblem &rank : ranks) rank.sweep();
+    exchange();
+    ResidualTerms terms;
+    for (ContactProblem &rank : ranks) terms.merge(rank.residual_terms());
+    result.residual = terms.residual();
+    ++result.sweeps;
+  }
+  for (ContactProblem &rank : ranks) {
+    rank.finish();
+    result.total_impulse += rank.contacts[0].impulse;
+  }
+  return result;
+}
+}    // namespace
+
+TEST(ContactProblem, MassSplittingConvergesWhereFourCopiesShareABody)
+{
+  // Summed corrections: each rank's sticking contact alone stops the ball, four stop it
+  // four times over, and the ball's velocity flips and grows: no convergence.
+  const SplitResult summed = ball_on_four_balls_split_over_four_ranks(1.0, 500);
+  EXPECT_GT(summed.residual, 1e-3);
+  // Mass splitting (share 4): the exact answer, the ball's weight over the four contacts.
+  const SplitResult split = ball_on_four_balls_split_over_four_ranks(4.0, 500);
+  std::cout << "[ info ] ball on 4 balls over 4 ranks: summed corrections residual "
+            << summed.residual << " after " << summed.sweeps << " sweeps; mass splitting "
+            << split.residual << " after " << split.sweeps << " sweeps\n";
+  ASSERT_LE(split.residual, 1e-10);
+  const double weight_impulse = 2.0 * kGravity * 1e-3;    // mass 2, dt 1e-3
+  EXPECT_NEAR(split.total_impulse.z(), weight_impulse, 1e-9 * weight_impulse);
+  EXPECT_NEAR(split.total_impulse.x(), 0.0, 1e-12);
+  EXPECT_NEAR(split.total_impulse.y(), 0.0, 1e-12);
+}
+
+TEST(ContactProblem, ShareBelowOneIsRejected)
+{
+  ContactProblem problem;
+  problem.bodies.emplace_back();
+  problem.bodies[0].inv_mass = 1.0;
+  problem.bodies[0].share = 0.5;
+  SolverOptions options = tight_options();
+  try {
+    problem.prepare(options);
+    FAIL() << "share 0.5 accepted";
+  } catch (const SolverError &e) {
+    EXPECT_NE(std::string(e.what()).find("share 0.5"), std::string::npos) << e.what();
+  }
+}
