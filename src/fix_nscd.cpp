@@ -33,12 +33,8 @@ enum Diagnostic {
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
 
-// One warm-start record as written to restart files.
-struct StoredContact {
-  std::int64_t tag_i, tag_j;
-  std::uint64_t feature;
-  double impulse[3];
-};
+// Restart files hold ImpulseRecords as raw bytes: their layout is the file format.
+static_assert(sizeof(nscd::ImpulseRecord) == 48, "restart record layout changed");
 }    // namespace
 
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
@@ -172,6 +168,7 @@ void FixNSCD::find_partners()
 void FixNSCD::setup(int vflag)
 {
   find_partners();
+  run_started = true;
   post_force(vflag);
   measure_kinetic_energy();
 }
@@ -258,15 +255,76 @@ void FixNSCD::gather_contacts()
     boundaries[k]->append_contacts(problem.contacts, pair->activation_distance());
     boundary_counts[k] = (int) (problem.contacts.size() - before);
   }
-  if (!restored_contacts.empty()) {    // first step after read_restart
-    warm_start.store(restored_contacts);
-    restored_contacts.clear();
-  }
-  warm_start.apply(problem.contacts);
+  warm_start_contacts();
   // Impulses scale with the step: after a `timestep` change, start from the same forces.
   if (warm_start_dt > 0.0 && warm_start_dt != dt)
     for (nscd::Contact &c : problem.contacts) c.impulse *= dt / warm_start_dt;
   warm_start_dt = dt;
+}
+
+/* Impulses of the last step, by contact key. A contact that another rank solved last step
+   (its grain migrated, or the pair changed owner with the new neighbor lists) takes its
+   impulse from the entries that rank did not use. */
+void FixNSCD::warm_start_contacts()
+{
+  const bool changed_rank = contacts_may_have_changed_rank();    // on every solve: it tracks the lists
+  // First step after read_restart: every rank holds every record, nothing to hand over.
+  const bool restored = !restored_contacts.empty();
+  if (restored) {
+    warm_start.store(restored_contacts);
+    restored_contacts.clear();
+  }
+  if (!changed_rank || restored) {
+    warm_start.apply(problem.contacts);
+    return;
+  }
+  nscd::WarmStartLeftovers leftovers;
+  warm_start.apply(problem.contacts, &leftovers);
+  take_over_warm_starts(leftovers);
+}
+
+/* Contacts change rank only with new neighbor lists (atoms migrate and pairs change owner
+   only then). Every rank builds its lists on the same steps and every run starts with new
+   ones (balance, comm changes), so all ranks agree. Call once per solve. */
+bool FixNSCD::contacts_may_have_changed_rank()
+{
+  const bool rebuilt = run_started || neighbor->lastcall != lists_of_last_solve;
+  run_started = false;
+  lists_of_last_solve = neighbor->lastcall;
+  return rebuilt && comm->nprocs > 1;
+}
+
+/* Collective. Only the entries no local contact used travel, and only when some rank missed
+   a contact and some rank has such entries: O(changed contacts), not O(all contacts). */
+void FixNSCD::take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers)
+{
+  const bigint mine[2] = {(bigint) leftovers.unused.size(), (bigint) leftovers.missed.size()};
+  bigint all[2];
+  MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all[0] == 0 || all[1] == 0) return;
+  handed_over.store(gather_records(leftovers.unused, true));
+  handed_over.apply_to(problem.contacts, leftovers.missed);
+}
+
+/* Every rank's records in rank order, on all ranks or on rank 0 only (empty elsewhere). */
+std::vector<nscd::ImpulseRecord> FixNSCD::gather_records(
+    const std::vector<nscd::ImpulseRecord> &mine, bool to_all_ranks) const
+{
+  const int bytes = (int) (mine.size() * sizeof(nscd::ImpulseRecord));
+  std::vector<int> counts(comm->nprocs, 0), offsets(comm->nprocs, 0);
+  if (to_all_ranks) MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  else MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+  for (int r = 1; r < comm->nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
+  const size_t total = (size_t) offsets.back() + counts.back();
+  std::vector<nscd::ImpulseRecord> all;
+  if (to_all_ranks || comm->me == 0) all.resize(total / sizeof(nscd::ImpulseRecord));
+  if (to_all_ranks)
+    MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(),
+                   MPI_BYTE, world);
+  else
+    MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(),
+                MPI_BYTE, 0, world);
+  return all;
 }
 
 int FixNSCD::boundary_of(size_t contact) const
@@ -607,23 +665,15 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
    exactly as the uninterrupted one. */
 void FixNSCD::write_restart(FILE *fp)
 {
-  std::vector<StoredContact> mine;
-  for (const nscd::Contact &c : problem.contacts)
-    mine.push_back({c.key.tag_i, c.key.tag_j, c.key.feature,
-                    {c.impulse.x(), c.impulse.y(), c.impulse.z()}});
-  int bytes = (int) (mine.size() * sizeof(StoredContact));
-  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
-  MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-  for (int r = 1; r < comm->nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<char> all(comm->me == 0 ? offsets.back() + counts.back() : 0);
-  MPI_Gatherv(mine.data(), bytes, MPI_CHAR, all.data(), counts.data(), offsets.data(), MPI_CHAR,
-              0, world);
+  std::vector<nscd::ImpulseRecord> mine;
+  for (const nscd::Contact &c : problem.contacts) mine.push_back(nscd::record_of(c));
+  const std::vector<nscd::ImpulseRecord> all = gather_records(mine, false);
   if (comm->me == 0) {    // size of the block, then the record count, then the records
-    const int count = (int) (all.size() / sizeof(StoredContact));
-    const int size = (int) (sizeof(int) + all.size());
+    const int count = (int) all.size();
+    const int size = (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord));
     fwrite(&size, sizeof(int), 1, fp);
     fwrite(&count, sizeof(int), 1, fp);
-    fwrite(all.data(), 1, all.size(), fp);
+    fwrite(all.data(), sizeof(nscd::ImpulseRecord), all.size(), fp);
   }
 }
 
@@ -632,16 +682,6 @@ void FixNSCD::restart(char *buf)
   // read_restart hands every rank the block written above, after its size.
   int count;
   std::memcpy(&count, buf, sizeof(int));
-  const char *records = buf + sizeof(int);
-  restored_contacts.clear();
-  for (int k = 0; k < count; k++) {
-    StoredContact s;
-    std::memcpy(&s, records + k * sizeof(StoredContact), sizeof(StoredContact));
-    nscd::Contact c;
-    c.key.tag_i = s.tag_i;
-    c.key.tag_j = s.tag_j;
-    c.key.feature = s.feature;
-    c.impulse = nscd::Vec3(s.impulse[0], s.impulse[1], s.impulse[2]);
-    restored_contacts.push_back(c);
-  }
+  restored_contacts.resize(count);
+  std::memcpy(restored_contacts.data(), buf + sizeof(int), count * sizeof(nscd::ImpulseRecord));
 }

@@ -60,7 +60,10 @@ class FixNSCD : public Fix {
 
   nscd::ContactProblem problem;
   nscd::WarmStartCache warm_start;
-  std::vector<nscd::Contact> restored_contacts;    // warm start read from a restart file
+  nscd::WarmStartCache handed_over;    // other ranks' unused impulses, after a list rebuild
+  std::vector<nscd::ImpulseRecord> restored_contacts;    // warm start read from a restart file
+  bigint lists_of_last_solve = -1;    // neighbor->lastcall at the last solve
+  bool run_started = true;            // setup() builds new lists (after balance, ...)
 
   enum class Exchange { state, share, correction, velocity, virial } exchange_mode = Exchange::state;
 
@@ -77,6 +80,11 @@ class FixNSCD : public Fix {
   void build_bodies();
   void gather_contacts();
   void count_shares();
+  void warm_start_contacts();
+  bool contacts_may_have_changed_rank();
+  void take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers);
+  std::vector<nscd::ImpulseRecord> gather_records(const std::vector<nscd::ImpulseRecord> &mine,
+                                                  bool to_all_ranks) const;
   void solve();
   void exchange_velocities();
   nscd::ResidualTerms global_terms() const;

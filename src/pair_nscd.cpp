@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 using namespace LAMMPS_NS;
 
@@ -165,6 +166,10 @@ void PairNSCD::compute(int eflag, int vflag)
 
 void PairNSCD::add_grain_contacts(int i, int j)
 {
+  // Which points of a touching patch the geometry reports, and their feature keys, depend on
+  // which grain comes first. In the order of IDs a pair gets the same points whichever rank
+  // and whichever neighbour-list order finds it, so its warm start is found again.
+  if (atom->tag[j] < atom->tag[i]) std::swap(i, j);
   double **x = atom->x;
   const nscd::Spheropolyhedron &shape_i = avec->shape_of(i), &shape_j = avec->shape_of(j);
   const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];

@@ -24,35 +24,100 @@ double canonicalise(ContactKey &key)
   return -1.0;
 }
 
+ImpulseRecord record_of(const ContactKey &key, const Vec3 &impulse)
+{
+  ImpulseRecord r;
+  r.tag_i = key.tag_i;
+  r.tag_j = key.tag_j;
+  r.feature = key.feature;
+  for (int d = 0; d < 3; d++) r.impulse[d] = impulse[d];
+  return r;
+}
+
 }    // namespace
 
-void WarmStartCache::store(const std::vector<Contact> &contacts)
+ImpulseRecord record_of(const Contact &contact)
 {
-  entries_.resize(contacts.size());
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    Entry &entry = entries_[c];
-    entry.key = contacts[c].key;
-    entry.impulse = canonicalise(entry.key) * contacts[c].impulse;
-  }
+  return record_of(contact.key, contact.impulse);
+}
+
+void WarmStartCache::add(ContactKey key, const Vec3 &impulse, std::size_t at)
+{
+  const double sign = canonicalise(key);
+  entries_[at] = {key, sign * impulse};
+}
+
+void WarmStartCache::sort_entries()
+{
   std::sort(entries_.begin(), entries_.end(),
             [](const Entry &a, const Entry &b) { return key_less(a.key, b.key); });
 }
 
-long WarmStartCache::apply(std::vector<Contact> &contacts) const
+void WarmStartCache::store(const std::vector<Contact> &contacts)
+{
+  entries_.resize(contacts.size());
+  for (std::size_t c = 0; c < contacts.size(); ++c) add(contacts[c].key, contacts[c].impulse, c);
+  sort_entries();
+}
+
+void WarmStartCache::store(const std::vector<ImpulseRecord> &records)
+{
+  entries_.resize(records.size());
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const ImpulseRecord &r = records[k];
+    add({r.tag_i, r.tag_j, r.feature}, Vec3(r.impulse[0], r.impulse[1], r.impulse[2]), k);
+  }
+  sort_entries();
+}
+
+long WarmStartCache::find(const Contact &contact, double &sign) const
+{
+  ContactKey key = contact.key;
+  sign = canonicalise(key);
+  const auto it = std::lower_bound(
+      entries_.begin(), entries_.end(), key,
+      [](const Entry &entry, const ContactKey &k) { return key_less(entry.key, k); });
+  if (it == entries_.end() || !key_equal(it->key, key)) return -1;
+  return (long) (it - entries_.begin());
+}
+
+long WarmStartCache::apply(std::vector<Contact> &contacts, WarmStartLeftovers *leftovers) const
+{
+  std::vector<char> used;    // only asked for on the few steps that hand impulses over
+  if (leftovers) {
+    leftovers->missed.clear();
+    leftovers->unused.clear();
+    used.assign(entries_.size(), 0);
+  }
+  long found = 0;
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    double sign;
+    const long e = find(contacts[c], sign);
+    if (e >= 0) {
+      contacts[c].impulse = sign * entries_[e].impulse;
+      ++found;
+      if (leftovers) used[e] = 1;
+    } else {
+      contacts[c].impulse.setZero();
+      if (leftovers) leftovers->missed.push_back(c);
+    }
+  }
+  if (leftovers)
+    for (std::size_t e = 0; e < entries_.size(); ++e)
+      if (!used[e]) leftovers->unused.push_back(record_of(entries_[e].key, entries_[e].impulse));
+  return found;
+}
+
+long WarmStartCache::apply_to(std::vector<Contact> &contacts,
+                              const std::vector<std::size_t> &which) const
 {
   long found = 0;
-  for (Contact &contact : contacts) {
-    ContactKey key = contact.key;
-    const double sign = canonicalise(key);
-    const auto it = std::lower_bound(
-        entries_.begin(), entries_.end(), key,
-        [](const Entry &entry, const ContactKey &k) { return key_less(entry.key, k); });
-    if (it != entries_.end() && key_equal(it->key, key)) {
-      contact.impulse = sign * it->impulse;
-      ++found;
-    } else {
-      contact.impulse.setZero();
-    }
+  for (std::size_t c : which) {
+    double sign;
+    const long e = find(contacts[c], sign);
+    if (e < 0) continue;
+    contacts[c].impulse = sign * entries_[e].impulse;
+    ++found;
   }
   return found;
 }

@@ -494,3 +494,42 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnOne)
   }
   MPI_Barrier(MPI_COMM_WORLD);
 }
+
+// Moving the sub-domain boundary (balance) hands the grains of a resting pyramid, and so
+// their contacts, to another rank; their warm start goes with them. The cut at x = 0 (no
+// grain centred on it) moves to x = -4: every grain ends on the last rank. Sweeps to 1e-9
+// (check 1), measured: np 2: resting 0, first step after balance 1, cold start 524; without
+// the hand-over 613. np 1: nothing to move, but the new run re-sorts the atoms and rebuilds
+// the lists: resting 1, then 1, cold 483. With pairs computed in neighbour-list order instead
+// of ID order the step after balance took 603 (np 1) and 614 (np 2).
+TEST_F(NSCDTest, WarmStartFollowsContactsToAnotherRank)
+{
+  const std::string solver = "fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1";
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+            "processors * 1 1", "shapes read " + scratch("shapes"),
+            "region box block -10 10 -10 10 -1 19", "create_box 1 box", "pair_style nscd",
+            "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+            "timestep 0.001", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+            "fix g all gravity 1.0 vector 0 0 -1", solver});
+  for (int level = 0; level < 4; level++)    // 4 + 3 + 2 + 1 cubes, across x = 0
+    for (int k = 0; k < 4 - level; k++) add_cube(-1.4 + 0.55 * level + 1.1 * k, 0.0, 0.5 + level);
+  commands({"shapes assign all shape 1 density 1", "run 300"});
+  const double resting = fix_value("solver", 0);
+
+  std::string cuts;    // fractions of the box: the last cut at x = -10 + 0.3 * 20 = -4
+  for (int k = 1; k < ranks(); k++) cuts += " " + num(0.3 * k / (ranks() - 1));
+  if (ranks() > 1) run("balance 1.0 x" + cuts);
+  else std::printf("[ INFO     ] 1 rank: no sub-domain boundary to move; a new run only\n");
+  const bool moved_all = rank() == ranks() - 1 || lmp->atom->nlocal == 0;
+  EXPECT_TRUE(moved_all) << "rank " << rank() << " still owns " << lmp->atom->nlocal << " grains";
+  run("run 1");
+  const double after_balance = fix_value("solver", 0);
+
+  commands({"unfix solver", solver, "run 1"});    // a new fix: no stored impulses
+  const double cold = fix_value("solver", 0);
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: sweeps resting %g, after balance %g, cold %g\n", ranks(),
+                resting, after_balance, cold);
+  EXPECT_GT(cold, 10 * (resting + 2));
+  EXPECT_LE(after_balance, resting + 2);
+}
