@@ -13,6 +13,7 @@
 #include "domain.h"
 #include "modify.h"
 #include "nscd_arrays.h"
+#include "nscd_gather.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
 #include "pair_nscd.h"
@@ -302,29 +303,8 @@ void FixNSCD::take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers)
   bigint all[2];
   MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all[0] == 0 || all[1] == 0) return;
-  handed_over.store(gather_records(leftovers.unused, true));
+  handed_over.store(gather_records(leftovers.unused, world, true));
   handed_over.apply_to(problem.contacts, leftovers.missed);
-}
-
-/* Every rank's records in rank order, on all ranks or on rank 0 only (empty elsewhere). */
-std::vector<nscd::ImpulseRecord> FixNSCD::gather_records(
-    const std::vector<nscd::ImpulseRecord> &mine, bool to_all_ranks) const
-{
-  const int bytes = (int) (mine.size() * sizeof(nscd::ImpulseRecord));
-  std::vector<int> counts(comm->nprocs, 0), offsets(comm->nprocs, 0);
-  if (to_all_ranks) MPI_Allgather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  else MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-  for (int r = 1; r < comm->nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
-  const size_t total = (size_t) offsets.back() + counts.back();
-  std::vector<nscd::ImpulseRecord> all;
-  if (to_all_ranks || comm->me == 0) all.resize(total / sizeof(nscd::ImpulseRecord));
-  if (to_all_ranks)
-    MPI_Allgatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(),
-                   MPI_BYTE, world);
-  else
-    MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), offsets.data(),
-                MPI_BYTE, 0, world);
-  return all;
 }
 
 int FixNSCD::boundary_of(size_t contact) const
@@ -667,7 +647,7 @@ void FixNSCD::write_restart(FILE *fp)
 {
   std::vector<nscd::ImpulseRecord> mine;
   for (const nscd::Contact &c : problem.contacts) mine.push_back(nscd::record_of(c));
-  const std::vector<nscd::ImpulseRecord> all = gather_records(mine, false);
+  const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
   if (comm->me == 0) {    // size of the block, then the record count, then the records
     const int count = (int) all.size();
     const int size = (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord));

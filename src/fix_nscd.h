@@ -83,8 +83,6 @@ class FixNSCD : public Fix {
   void warm_start_contacts();
   bool contacts_may_have_changed_rank();
   void take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers);
-  std::vector<nscd::ImpulseRecord> gather_records(const std::vector<nscd::ImpulseRecord> &mine,
-                                                  bool to_all_ranks) const;
   void solve();
   void exchange_velocities();
   nscd::ResidualTerms global_terms() const;

@@ -14,6 +14,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "nscd_arrays.h"
+#include "nscd_gather.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -38,13 +39,14 @@ struct StoredHistory {
   double key[4];    // tags, stored as doubles (exact up to 2^53)
   double history[nscd::wire::TangentialHistory::kNumDoubles];
 };
-constexpr int kStoredDoubles = sizeof(StoredHistory) / sizeof(double);
 
-void append_history(std::vector<double> &out, const FixWire::ContactKey &key,
-                    const nscd::wire::TangentialHistory &h)
+StoredHistory stored(const FixWire::ContactKey &key, const nscd::wire::TangentialHistory &h)
 {
-  for (tagint t : key) out.push_back((double) t);
-  out.insert(out.end(), {h.xi[0], h.xi[1], h.xi[2], h.sliding});
+  StoredHistory s;
+  for (int d = 0; d < 4; d++) s.key[d] = (double) key[d];
+  for (int d = 0; d < 3; d++) s.history[d] = h.xi[d];
+  s.history[3] = h.sliding;
+  return s;
 }
 
 FixWire::ContactKey key_of(const StoredHistory &s)
@@ -58,26 +60,6 @@ nscd::wire::TangentialHistory history_of(const StoredHistory &s)
   for (int d = 0; d < 3; d++) h.xi[d] = s.history[d];
   h.sliding = s.history[3];
   return h;
-}
-
-// The records of all ranks, in rank order: on every rank (to_all) or on rank 0 only.
-std::vector<StoredHistory> gather_records(const std::vector<double> &mine, MPI_Comm world, bool to_all)
-{
-  int nprocs, me;
-  MPI_Comm_size(world, &nprocs);
-  MPI_Comm_rank(world, &me);
-  const int count = (int) mine.size();
-  std::vector<int> counts(nprocs), offsets(nprocs, 0);
-  if (to_all) MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  else MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
-  for (int r = 1; r < nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<StoredHistory> all((to_all || me == 0) ? (offsets.back() + counts.back()) / kStoredDoubles : 0);
-  double *into = reinterpret_cast<double *>(all.data());
-  if (to_all)
-    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, into, counts.data(), offsets.data(), MPI_DOUBLE, world);
-  else
-    MPI_Gatherv(mine.data(), count, MPI_DOUBLE, into, counts.data(), offsets.data(), MPI_DOUBLE, 0, world);
-  return all;
 }
 }    // namespace
 
@@ -656,18 +638,18 @@ void FixWire::hand_over_histories()
   };
   // After read_restart every rank holds every history: keep the own ones.
   const bool send = comm->nprocs > 1 && !histories_on_every_rank;
-  std::vector<double> leaving;
+  std::vector<StoredHistory> leaving;
   for (auto it = histories.begin(); it != histories.end();) {
     if (owned_here(it->first[0])) {
       ++it;
       continue;
     }
-    if (send) append_history(leaving, it->first, it->second);
+    if (send) leaving.push_back(stored(it->first, it->second));
     it = histories.erase(it);
   }
   histories_on_every_rank = false;
   if (!send) return;
-  for (const StoredHistory &h : gather_records(leaving, world, /*to_all=*/true))
+  for (const StoredHistory &h : gather_records(leaving, world, true))
     if (owned_here((tagint) h.key[0])) histories[key_of(h)] = history_of(h);
 }
 
@@ -909,9 +891,9 @@ int FixWire::maxsize_restart()
    ranks. */
 void FixWire::write_restart(FILE *fp)
 {
-  std::vector<double> mine;
-  for (const auto &entry : histories) append_history(mine, entry.first, entry.second);
-  const std::vector<StoredHistory> all = gather_records(mine, world, /*to_all=*/false);
+  std::vector<StoredHistory> mine;
+  for (const auto &entry : histories) mine.push_back(stored(entry.first, entry.second));
+  const std::vector<StoredHistory> all = gather_records(mine, world, false);
   if (comm->me == 0) {
     const double header[2] = {state_dt, (double) all.size()};
     const int size = (int) (sizeof(header) + all.size() * sizeof(StoredHistory));
