@@ -552,6 +552,21 @@ TEST_F(CrossingWiresTest, PressedWireStaysAtTheSpringOverlapSticksUntilMuSAndSli
 
 // mu_s alone means mu_d = mu_s: after a slip, a pull below mu_s f_n lets the wire stick
 // again (with mu_d left at 0 it would slide on without friction).
+TEST_F(CrossingWiresTest, GhostCutoffBelowTheContactReachIsANamedErrorAcrossRanks)
+{
+  // elements of length 1, r_w = 0.05, skin 0.3: a contact reaches 2 + 0.1 + 0.3 = 2.4 from
+  // its owner's node; pair_style zero 1.0 + skin gives a ghost cutoff of only 1.3
+  crossing();
+  run("comm_modify cutoff 0.0");
+  const std::string message = error_of("run 0");
+  if (ranks() == 1) {
+    EXPECT_EQ(message, "");    // one rank, no periodic boundary: nothing needs ghosts
+  } else {
+    EXPECT_NE(message.find("ghost cutoff 1.3 "), std::string::npos) << message;
+    EXPECT_NE(message.find("comm_modify cutoff 2.4'"), std::string::npos) << message;
+  }
+}
+
 TEST_F(CrossingWiresTest, StaticCoefficientAloneAlsoActsWhileSliding)
 {
   crossing("mu_s " + num(kMuS));
