@@ -381,6 +381,60 @@ TEST_F(WireOnGrainTest, RestartContinuesTheWireRun)
   }
 }
 
+// Restarts move between rank counts: written on all ranks and continued on rank 0 alone,
+// and written on rank 0 alone and continued on all ranks, each time following the
+// continuation without a restart. The wire slides over the cube, so the restart carries
+// contact histories (and Gear states) that must reach the right ranks.
+TEST_F(WireOnGrainTest, RestartMovesBetweenRankCounts)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "fix g wire gravity 1.0 vector 0 0 -1",
+      "fix w wire wire radius 0.05 k_n 1000 gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.5 mu_d 0.4 "
+      "damp 0.02"};
+  const std::string all_file = scratch("all_ranks.restart"), alone_file = scratch("alone.restart");
+  on_grain(0.02);
+  commands({"velocity wire set 0.3 0 0", "run 200", "write_restart " + all_file, "run 200"});
+  std::vector<double> on_all_ranks;
+  for (int k = 1; k <= 5; k++)
+    for (double c : position(k)) on_all_ranks.push_back(c);
+  EXPECT_GE(fix_value("w", 4), 1.0);    // the wire touches the cube
+
+  // rank 0 alone: continue the all-rank file, then write its own file and go on
+  std::vector<double> alone_after(15, 0.0);
+  MPI_Comm alone;
+  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
+  if (rank() == 0) {
+    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    auto *single = new LAMMPS(8, const_cast<char **>(argv), alone);
+    single->input->one("read_restart " + all_file);
+    for (const std::string &line : redefine) single->input->one(line);
+    single->input->one("run 100");
+    single->input->one("write_restart " + alone_file);
+    single->input->one("run 100");
+    for (int k = 1; k <= 5; k++) {
+      const int i = single->atom->map(k);
+      ASSERT_GE(i, 0);
+      for (int d = 0; d < 3; d++) {
+        EXPECT_NEAR(single->atom->x[i][d], on_all_ranks[3 * (k - 1) + d], 1e-10) << "node " << k;
+        alone_after[3 * (k - 1) + d] = single->atom->x[i][d];
+      }
+    }
+    delete single;
+    MPI_Comm_free(&alone);
+  }
+  MPI_Bcast(alone_after.data(), 15, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+
+  // all ranks: continue the file rank 0 wrote alone
+  restart_instance();
+  run("read_restart " + alone_file);
+  commands(redefine);
+  run("run 100");
+  for (int k = 1; k <= 5; k++) {
+    const std::vector<double> p = position(k);
+    for (int d = 0; d < 3; d++) EXPECT_NEAR(p[d], alone_after[3 * (k - 1) + d], 1e-10) << "node " << k;
+  }
+}
+
 TEST_F(WireTest, SubstepAboveTheStabilityLimitIsANamedError)
 {
   scene(straight_chain(11, 0.1, 0.01), 11, true, 1e4, 0.1, 1.0);
