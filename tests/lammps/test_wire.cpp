@@ -392,7 +392,7 @@ TEST_F(WireOnGrainTest, RestartMovesBetweenRankCounts)
       "fix w wire wire radius 0.05 k_n 1000 gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.5 mu_d 0.4 "
       "damp 0.02"};
   const std::string all_file = scratch("all_ranks.restart"), alone_file = scratch("alone.restart");
-  on_grain(0.02);
+  on_grain(0.0);
   commands({"velocity wire set 0.3 0 0", "run 200", "write_restart " + all_file, "run 200"});
   std::vector<double> on_all_ranks;
   for (int k = 1; k <= 5; k++)
