@@ -7,6 +7,7 @@
 
 #include "angle.h"
 #include "bond.h"
+#include "comm.h"
 #include "compute.h"
 #include "fix.h"
 #include "force.h"
@@ -608,6 +609,35 @@ TEST_F(CrossingWiresTest, PressedWireStaysAtTheSpringOverlapSticksUntilMuSAndSli
 
 // mu_s alone means mu_d = mu_s: after a slip, a pull below mu_s f_n lets the wire stick
 // again (with mu_d left at 0 it would slide on without friction).
+// The friction history of a sticking contact follows its computing node to another rank:
+// B, pressed onto A and pulled sideways by 0.3 f_n (below mu_s), is held by the tangential
+// spring alone (stretched by 0.3 f_n / k_t = 3e-5). Moving the cut (balance) hands node 1,
+// the first node of the lower element and so the contact's owner, to another rank. With the
+// history handed over B does not move; without it the spring restarts from zero and B
+// slides back by about 3e-5 before it sticks again.
+TEST_F(CrossingWiresTest, StickingHistoryFollowsTheContactToAnotherRank)
+{
+  crossing();
+  pull(0.3 * kNormal);
+  run("run 400");
+  const double before = b_position(0);
+  int owner = -1;
+  auto owner_of_node_1 = [&]() {
+    const int i = lmp->atom->map(1);
+    int mine = (i >= 0 && i < lmp->atom->nlocal) ? rank() : -1, all;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return all;
+  };
+  owner = owner_of_node_1();
+  // the cut through x = 0 (or y: 2 and 4 ranks are split 2 x 1 or 2 x 2) moves to 2 % of the box
+  if (ranks() > 1) run(std::string("balance 1.0 ") + (lmp->comm->procgrid[0] == 2 ? "x" : "y") + " 0.02");
+  run("run 50");
+  std::printf("[ crossing ] node 1 owned by rank %d, then %d; B moved by %.3g while sticking\n",
+              owner, owner_of_node_1(), b_position(0) - before);
+  if (ranks() > 1) EXPECT_NE(owner_of_node_1(), owner);    // the contact changed rank
+  EXPECT_NEAR(b_position(0), before, 1e-9);
+}
+
 TEST_F(CrossingWiresTest, GhostCutoffBelowTheContactReachIsANamedErrorAcrossRanks)
 {
   // elements of length 1, r_w = 0.05, skin 0.3: a contact reaches 2 + 0.1 + 0.3 = 2.4 from
