@@ -80,6 +80,13 @@ class WireTest : public LammpsTest {
     if (closed) bonds.push_back({last, first});
     return bonds;
   }
+  // Joints (angles) of a closed ring of atoms 1..n.
+  static std::vector<std::array<int, 3>> ring_joints(int n)
+  {
+    std::vector<std::array<int, 3>> joints;
+    for (int k = 0; k < n; k++) joints.push_back({k + 1, (k + 1) % n + 1, (k + 2) % n + 1});
+    return joints;
+  }
   // The same for any list of bonds and angles (atom IDs from 1).
   void write_topology(const std::string &path, const std::vector<Point> &atoms,
                       const std::vector<std::array<int, 2>> &bonds,
@@ -686,10 +693,8 @@ class WireLoopTest : public WireTest {
     for (int k = 0; k < kNodes; k++) atoms.push_back(loop_point(k * l, rho));
     const double c[4][2] = {{0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}, {-0.5, -0.5}};
     for (const auto &xy : c) atoms.push_back({xy[0], xy[1], 0.5, kBallMass, 2, 2});
-    std::vector<std::array<int, 3>> joints;
-    for (int k = 0; k < kNodes; k++) joints.push_back({k + 1, (k + 1) % kNodes + 1, (k + 2) % kNodes + 1});
     const std::string data = scratch("loop.data");
-    write_topology(data, atoms, chain_bonds(1, kNodes, true), joints);
+    write_topology(data, atoms, chain_bonds(1, kNodes, true), ring_joints(kNodes));
     load_scene(data, 20.0, 0.99 * l, 1e-3);
     commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0",
               "group wire id 1:" + std::to_string(kNodes), "group balls type 2",
@@ -775,11 +780,8 @@ class WireBoundPyramidTest : public WireLoopTest {
     for (double x : {-0.5, 0.5})
       for (double y : {-0.5, 0.5}) atoms.push_back({x, y, 0.5 + rise, kBall, 2, 2});
     atoms.push_back({0.0, 0.0, 0.5 + 2.0 * rise, kBall, 2, 2});
-    std::vector<std::array<int, 3>> joints;
-    for (int k = 0; k < kLoopNodes; k++)
-      joints.push_back({k + 1, (k + 1) % kLoopNodes + 1, (k + 2) % kLoopNodes + 1});
     const std::string data = scratch("pyramid.data");
-    write_topology(data, atoms, chain_bonds(1, kLoopNodes, true), joints);
+    write_topology(data, atoms, chain_bonds(1, kLoopNodes, true), ring_joints(kLoopNodes));
     // a stiff loop: 1 % short gives a tension of 2, four times the thrust of the upper balls
     load_scene(data, 200.0, 0.99 * l, 1e-3);
     commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0",
