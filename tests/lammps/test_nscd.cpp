@@ -332,6 +332,25 @@ TEST_F(NSCDTest, ContactsComputeListsEveryPointWithItsForce)
   EXPECT_NEAR(fn->compute_scalar(), 1.0, 1e-9);
 }
 
+// The compute reports the last solve's contacts also when the pair style has found newer
+// ones at a run's setup (here a grain moved onto another between runs): it used to take
+// wall contacts for grain pairs, skip them and read their unset atom IDs (a crash of
+// `dump local` at the setup of a run in a pour).
+TEST_F(NSCDTest, ContactsComputeBetweenRunsNamesTheLastSolvesBoundaries)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  add_cube(4.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "compute c all nscd/contacts", "run 10",
+            "group second id 2", "displace_atoms second move -4.0 0.0 1.0 units box", "run 0"});
+  auto *c = lmp->modify->compute[lmp->modify->find_compute("c")];
+  c->compute_local();
+  int rows = c->size_local_rows, all_rows = 0;
+  MPI_Allreduce(&rows, &all_rows, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(all_rows, 8);                      // 4 corners of each cube on the floor
+  for (int r = 0; r < rows; r++) EXPECT_EQ(c->array_local[r][1], -1.0);
+}
+
 // A cube pushed sideways by gravity against the inside of a cylinder (a silo wall).
 TEST_F(NSCDTest, CylinderWallHoldsAGrainPushedAgainstIt)
 {
