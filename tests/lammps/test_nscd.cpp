@@ -513,3 +513,43 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnOne)
   }
   MPI_Barrier(MPI_COMM_WORLD);
 }
+
+// The reverse: a restart written by a single rank (rank 0 alone, on its own communicator)
+// continues on all ranks of this run and follows the single rank's own continuation.
+TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+      "fix solver all nscd tolerance 1e-10 max_sweeps 5000"};
+  std::vector<double> on_one_rank(3 * 4, 0.0);    // positions of atoms 1..4
+  MPI_Comm alone;
+  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
+  if (rank() == 0) {
+    // the fixture's helpers (scene, add_cube, commands) drive whichever instance lmp is
+    LAMMPS_NS::LAMMPS *all_ranks = lmp;
+    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
+    scene(0.5, "tolerance 1e-10 max_sweeps 5000");
+    for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.6 + 1.1 * k);    // falls, then rests
+    commands({"shapes assign all shape 1 density 1 orient random 3", "run 300",
+              "write_restart " + scratch("one_rank.restart"), "run 200"});
+    for (tagint k = 1; k <= 4; k++) {
+      const int i = lmp->atom->map(k);
+      ASSERT_GE(i, 0);
+      for (int d = 0; d < 3; d++) on_one_rank[3 * (k - 1) + d] = lmp->atom->x[i][d];
+    }
+    delete lmp;
+    lmp = all_ranks;
+    MPI_Comm_free(&alone);
+  }
+  MPI_Bcast(on_one_rank.data(), (int) on_one_rank.size(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+
+  run("read_restart " + scratch("one_rank.restart"));
+  commands(redefine);
+  run("run 200");
+  for (tagint k = 1; k <= 4; k++) {
+    const std::vector<double> s = state_of(k);
+    for (int d = 0; d < 3; d++) EXPECT_NEAR(s[d], on_one_rank[3 * (k - 1) + d], 1e-6) << "atom " << k;
+  }
+}
