@@ -7,7 +7,7 @@
 # Open MPI's mpi_yield_when_idle (4 ranks on 2 cores busy-poll otherwise).
 #
 #   benchmarks/mpi/run.sh [small] [lmp arguments for in.pour, e.g. -var tolerance 1e-5]
-#     (default) 200 grains; about 12 minutes on 2 cores (3 more per extra seed)
+#     (default) 200 grains; about 8 minutes on 2 cores (1 more per extra seed)
 #     small     80 grains, the pours only (the CTest mpi.pile_on_1_2_4_ranks)
 #
 # Environment: LMP (default build/lmp), MPIRUN (mpirun), WORK (default benchmarks/mpi/work
