@@ -250,6 +250,7 @@ void FixNSCD::build_bodies()
 void FixNSCD::gather_contacts()
 {
   problem.contacts = pair->contacts();
+  pair_count = problem.contacts.size();
   boundary_counts.assign(boundaries.size(), 0);
   for (size_t k = 0; k < boundaries.size(); k++) {
     const size_t before = problem.contacts.size();
@@ -307,9 +308,11 @@ void FixNSCD::take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers)
   handed_over.apply_to(problem.contacts, leftovers.missed);
 }
 
+/* Of the last solve's contacts: the pair style's list may be newer (a run's setup finds
+   contacts at the positions after the last move). */
 int FixNSCD::boundary_of(size_t contact) const
 {
-  size_t first = pair->contacts().size();
+  size_t first = pair_count;
   if (contact < first) return 0;
   for (size_t k = 0; k < boundary_counts.size(); k++) {
     first += boundary_counts[k];
@@ -463,7 +466,7 @@ void FixNSCD::hand_back_forces()
       comm->reverse_comm_fix(this, 6);
     }
   }
-  size_t first = pair->contacts().size();
+  size_t first = pair_count;
   for (size_t k = 0; k < boundaries.size(); k++) {
     boundaries[k]->take_impulses(c.data() + first, boundary_counts[k], dt);
     first += boundary_counts[k];

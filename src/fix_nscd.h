@@ -55,7 +55,8 @@ class FixNSCD : public Fix {
   class PairNSCD *pair = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
   std::vector<class NSCDBoundary *> boundaries;
-  std::vector<int> boundary_counts;
+  size_t pair_count = 0;             // problem.contacts: pair_count grain pairs, then each
+  std::vector<int> boundary_counts;  // boundary's in turn (as of the last solve)
   std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
 
   nscd::ContactProblem problem;

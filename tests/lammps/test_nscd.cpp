@@ -332,6 +332,25 @@ TEST_F(NSCDTest, ContactsComputeListsEveryPointWithItsForce)
   EXPECT_NEAR(fn->compute_scalar(), 1.0, 1e-9);
 }
 
+// The compute reports the last solve's contacts also when the pair style has found newer
+// ones at a run's setup (here a grain moved onto another between runs): it used to take
+// wall contacts for grain pairs, skip them and read their unset atom IDs (a crash of
+// `dump local` at the setup of a run in a pour).
+TEST_F(NSCDTest, ContactsComputeBetweenRunsNamesTheLastSolvesBoundaries)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  add_cube(4.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "compute c all nscd/contacts", "run 10",
+            "group second id 2", "displace_atoms second move -4.0 0.0 1.0 units box", "run 0"});
+  auto *c = lmp->modify->compute[lmp->modify->find_compute("c")];
+  c->compute_local();
+  int rows = c->size_local_rows, all_rows = 0;
+  MPI_Allreduce(&rows, &all_rows, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(all_rows, 8);                      // 4 corners of each cube on the floor
+  for (int r = 0; r < rows; r++) EXPECT_EQ(c->array_local[r][1], -1.0);
+}
+
 // A cube pushed sideways by gravity against the inside of a cylinder (a silo wall).
 TEST_F(NSCDTest, CylinderWallHoldsAGrainPushedAgainstIt)
 {
@@ -532,4 +551,44 @@ TEST_F(NSCDTest, WarmStartFollowsContactsToAnotherRank)
                 resting, after_balance, cold);
   EXPECT_GT(cold, 10 * (resting + 2));
   EXPECT_LE(after_balance, resting + 2);
+}
+
+// The reverse: a restart written by a single rank (rank 0 alone, on its own communicator)
+// continues on all ranks of this run and follows the single rank's own continuation.
+TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+      "fix solver all nscd tolerance 1e-10 max_sweeps 5000"};
+  std::vector<double> on_one_rank(3 * 4, 0.0);    // positions of atoms 1..4
+  MPI_Comm alone;
+  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
+  if (rank() == 0) {
+    // the fixture's helpers (scene, add_cube, commands) drive whichever instance lmp is
+    LAMMPS_NS::LAMMPS *all_ranks = lmp;
+    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+    lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
+    scene(0.5, "tolerance 1e-10 max_sweeps 5000");
+    for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.6 + 1.1 * k);    // falls, then rests
+    commands({"shapes assign all shape 1 density 1 orient random 3", "run 300",
+              "write_restart " + scratch("one_rank.restart"), "run 200"});
+    for (tagint k = 1; k <= 4; k++) {
+      const int i = lmp->atom->map(k);
+      ASSERT_GE(i, 0);
+      for (int d = 0; d < 3; d++) on_one_rank[3 * (k - 1) + d] = lmp->atom->x[i][d];
+    }
+    delete lmp;
+    lmp = all_ranks;
+    MPI_Comm_free(&alone);
+  }
+  MPI_Bcast(on_one_rank.data(), (int) on_one_rank.size(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+
+  run("read_restart " + scratch("one_rank.restart"));
+  commands(redefine);
+  run("run 200");
+  for (tagint k = 1; k <= 4; k++) {
+    const std::vector<double> s = state_of(k);
+    for (int d = 0; d < 3; d++) EXPECT_NEAR(s[d], on_one_rank[3 * (k - 1) + d], 1e-6) << "atom " << k;
+  }
 }
