@@ -109,19 +109,29 @@ def pile(run):
 
 
 def pour(ref, runs):
+    """Each pile against the mean of the 1-rank piles (REF and any other 1-rank runs): pours
+    differing only in their initial velocities scatter, so one 1-rank pile is no better a
+    reference than another."""
+    rows = {run: pile(run) for run in [ref] + runs}
+    singles = [row for row in rows.values() if row is not None and row["ranks"] == 1]
     print(f"Piles at rest (statistics over a window at rest; a grain is at rest if its "
           f"farthest point moved less than {V_REST} x the window's duration). "
           f"Tolerances: same atoms as the 1-rank pile, at most {MOVING_TOL:.0%} of the grains not "
           f"at rest, "
           f"|floor/weight - 1| < {FLOOR_TOL}, height within {HEIGHT_TOL:.0%}, "
-          f"mean contact force within {FORCE_TOL:.0%} of the 1-rank pile's.\n")
+          f"mean contact force within {FORCE_TOL:.0%} of the mean of the {len(singles)} "
+          f"1-rank pile(s) (the percentages).\n")
     print("| run | ranks | atoms | at rest | floor/weight - 1 | height H = 2 z_com | "
           "solid fraction | mean contact force | steps to rest | unconverged steps (worst residual) | pour+settle s | "
           "window sweeps/step | window s/step | check |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    base, failed = pile(ref), False
-    for run in [ref] + runs:
-        row = pile(run)
+    failed = False
+    base = None
+    if rows[ref] is not None and singles:
+        base = dict(atoms=rows[ref]["atoms"],
+                    height=sum(r["height"] for r in singles) / len(singles),
+                    force=sum(r["force"] for r in singles) / len(singles))
+    for run, row in rows.items():
         if row is None or base is None:
             print(f"| {label(run)} | | | | | | | | | | | | | FAILED: no result, see {run}/log.lammps |")
             failed = True

@@ -7,7 +7,7 @@
 # Open MPI's mpi_yield_when_idle (4 ranks on 2 cores busy-poll otherwise).
 #
 #   benchmarks/mpi/run.sh [small] [lmp arguments for in.pour, e.g. -var tolerance 1e-5]
-#     (default) 200 grains; about 8 minutes on 2 cores (1 more per extra seed)
+#     (default) 200 grains; about 12 minutes on 2 cores (1 more per extra seed)
 #     small     80 grains, the pours only (the CTest mpi.pile_on_1_2_4_ranks)
 #
 # Environment: LMP (default build/lmp), MPIRUN (mpirun), WORK (default benchmarks/mpi/work
@@ -63,8 +63,8 @@ status=${PIPESTATUS[0]}
 restart=$work/pour.np1/settled.restart
 run continue.np1 1 1 in.continue -var restart "$restart"
 for np in 2 4; do run continue.np${np}_yield1 "$np" 1 in.continue -var restart "$restart"; done
-# Without yielding, 4 ranks on 2 cores busy-poll: 50x slower, so the rest phase only.
-for np in 2 4; do run continue.np${np}_yield0 "$np" 0 in.continue -var restart "$restart" -var phases 1; done
+# Without yielding, 4 ranks on 2 cores busy-poll: 40-180x slower, so 100 steps at rest only.
+for np in 2 4; do run continue.np${np}_yield0 "$np" 0 in.continue -var restart "$restart" -var phases 1 -var steps 100; done
 python3 "$here/check.py" continue "$work"/continue.np1 "$work"/continue.np{2,4}_yield{1,0} |
   tee -a "$work/results.md"
 exit "$status"
