@@ -138,6 +138,13 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
                                   const CylinderWall &wall, double activation,
                                   ContactWorkspace &workspace);
 
+// A sphere i (a wire node dilated by the wire's radius) against a wall j: the one point,
+// whatever its gap. A chain of spherocylinders touches a plane or the inside of a cylinder
+// only with the spheres at its nodes (height is linear and the distance from an axis convex
+// along a segment, so both are extreme at an end), so these are the wire's wall contacts.
+ContactPoint contact_sphere_plane(const Vec3 &centre, double radius, const PlaneWall &wall);
+ContactPoint contact_sphere_cylinder(const Vec3 &centre, double radius, const CylinderWall &wall);
+
 // Wire segment i against grain j: the single point of closest approach (for a segment
 // lying flat on a face, the middle of the touching stretch).
 std::optional<SegmentContact> contact_segment_grain(const Segment &segment,

@@ -49,6 +49,44 @@ void place_vertices(const Spheropolyhedron &shape, const Pose &pose, std::vector
   for (size_t k = 0; k < shape.vertices.size(); ++k) vertices[k] = rotation * shape.vertices[k];
 }
 
+// A point at height `height` above a plane (offset `v` from the query's origin), dilated
+// by `radius`: its gap and the contact position, midway between its surface and the plane.
+struct Touch {
+  Vec3 position;
+  double gap;
+};
+Touch touch_plane(const Vec3 &v, double height, double radius, const Vec3 &normal)
+{
+  return {v - 0.5 * (height + radius) * normal, height - radius};
+}
+
+// A point at distance rho from a cylinder's axis (offset `v` from the query's origin, unit
+// `outward` direction from the axis), dilated by `radius`, inside a cylinder of radius R.
+Touch touch_cylinder(const Vec3 &v, double rho, const Vec3 &outward, double radius, double R)
+{
+  return {v + 0.5 * (R - rho + radius) * outward, R - rho - radius};
+}
+
+// The unit direction from the axis to a point at radial offset `radial` (length rho). A
+// point on the axis itself is equally far from the whole wall: any radial direction will
+// do; take a fixed one so the answer is deterministic.
+Vec3 outward_from_axis(const Vec3 &radial, double rho, const Vec3 &axis)
+{
+  return rho > 0.0 ? Vec3(radial / rho) : any_perpendicular(axis);
+}
+
+Vec3 checked_cylinder_axis(const CylinderWall &wall)
+{
+  check_point(wall.axis_point, "cylinder wall axis point");
+  const Vec3 axis = unit_direction(wall.axis_direction, "cylinder wall axis direction");
+  if (!std::isfinite(wall.radius) || wall.radius <= 0.0) {
+    std::ostringstream out;
+    out << "cylinder wall radius " << wall.radius << " is invalid; give a finite radius > 0";
+    throw ContactError(out.str());
+  }
+  return axis;
+}
+
 }    // namespace
 
 ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
@@ -65,12 +103,9 @@ ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
   ws.candidates.clear();
   for (size_t k = 0; k < ws.vertices_i.size(); ++k) {
     const Vec3 &v = ws.vertices_i[k];
-    const double height = centre_height + normal.dot(v);    // core vertex above the wall
-    const double gap = height - shape.radius;
-    if (!(gap <= activation)) continue;
-    // Midway between the grain's surface (height - r) and the wall (height 0).
-    const Vec3 position = v - 0.5 * (height + shape.radius) * normal;
-    ws.candidates.push_back({position, v, gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
+    const Touch t = touch_plane(v, centre_height + normal.dot(v), shape.radius, normal);
+    if (!(t.gap <= activation)) continue;
+    ws.candidates.push_back({t.position, v, t.gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
   }
   write_contact_set(ws, normal, pose.position, shape.bounding_radius, out);
   return out;
@@ -81,13 +116,7 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
                                   ContactWorkspace &ws)
 {
   check_activation(activation);
-  check_point(wall.axis_point, "cylinder wall axis point");
-  const Vec3 axis = unit_direction(wall.axis_direction, "cylinder wall axis direction");
-  if (!std::isfinite(wall.radius) || wall.radius <= 0.0) {
-    std::ostringstream out;
-    out << "cylinder wall radius " << wall.radius << " is invalid; give a finite radius > 0";
-    throw ContactError(out.str());
-  }
+  const Vec3 axis = checked_cylinder_axis(wall);
   ContactSet out;
   const Vec3 centre_offset = pose.position - wall.axis_point;
   const Vec3 centre_radial = centre_offset - axis.dot(centre_offset) * axis;
@@ -101,16 +130,12 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
     const Vec3 &v = ws.vertices_i[k];
     const Vec3 radial = centre_radial + v - axis.dot(v) * axis;    // from the axis to the vertex
     const double rho = radial.norm();
-    const double gap = wall.radius - rho - shape.radius;
-    if (!(gap <= activation)) continue;
-    // A vertex on the axis itself is equally far from the whole wall: any radial
-    // direction will do; take a fixed one so the answer is deterministic.
-    const Vec3 outward = rho > 0.0 ? Vec3(radial / rho) : any_perpendicular(axis);
-    // Midway between the grain's surface (rho + r) and the wall (R), along the radius.
-    const Vec3 position = v + 0.5 * (wall.radius - rho + shape.radius) * outward;
-    ws.candidates.push_back({position, v, gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
-    if (ws.candidates.size() == 1 || gap < deepest_gap) {
-      deepest_gap = gap;
+    const Vec3 outward = outward_from_axis(radial, rho, axis);
+    const Touch t = touch_cylinder(v, rho, outward, shape.radius, wall.radius);
+    if (!(t.gap <= activation)) continue;
+    ws.candidates.push_back({t.position, v, t.gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
+    if (ws.candidates.size() == 1 || t.gap < deepest_gap) {
+      deepest_gap = t.gap;
       deepest_outward = outward;
     }
   }
@@ -120,10 +145,28 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
   for (int k = 0; k < out.count; ++k) {
     const Vec3 offset = out.points[k].point - wall.axis_point;
     const Vec3 radial = offset - axis.dot(offset) * axis;
-    const double rho = radial.norm();
-    out.points[k].normal = rho > 0.0 ? Vec3(-radial / rho) : Vec3(-any_perpendicular(axis));
+    out.points[k].normal = -outward_from_axis(radial, radial.norm(), axis);
   }
   return out;
+}
+
+ContactPoint contact_sphere_plane(const Vec3 &centre, double radius, const PlaneWall &wall)
+{
+  check_point(wall.point, "plane wall point");
+  const Vec3 normal = unit_direction(wall.normal, "plane wall normal");
+  const Touch t = touch_plane(Vec3::Zero(), normal.dot(centre - wall.point), radius, normal);
+  return {centre + t.position, normal, t.gap, make_key(vertex_feature(0), wall_feature())};
+}
+
+ContactPoint contact_sphere_cylinder(const Vec3 &centre, double radius, const CylinderWall &wall)
+{
+  const Vec3 axis = checked_cylinder_axis(wall);
+  const Vec3 offset = centre - wall.axis_point;
+  const Vec3 radial = offset - axis.dot(offset) * axis;
+  const double rho = radial.norm();
+  const Vec3 outward = outward_from_axis(radial, rho, axis);
+  const Touch t = touch_cylinder(Vec3::Zero(), rho, outward, radius, wall.radius);
+  return {centre + t.position, -outward, t.gap, make_key(vertex_feature(0), wall_feature())};
 }
 
 }    // namespace nscd

@@ -93,6 +93,47 @@ TEST(ContactCylinder, SphereInsideCylinder)
   EXPECT_THROW(contact_grain_cylinder(ball, Pose{}, CylinderWall{Vec3::Zero(), Vec3::UnitZ(), 0.0}, 0.0, ws), ContactError);
 }
 
+// A wire node (a sphere) against walls: closed forms, and the same point, normal and gap as
+// the grain queries give a one-vertex grain of that radius.
+TEST(ContactSphereWall, PlaneAndCylinderMatchClosedFormsAndTheGrainQueries)
+{
+  ContactWorkspace ws;
+  const PlaneWall floor{Vec3(0, 0, 1), Vec3(0, 0, 2)};    // normal not unit: normalised
+  const ContactPoint p = contact_sphere_plane(Vec3(3, -2, 1.04), 0.05, floor);
+  EXPECT_NEAR(p.gap, -0.01, kTol);
+  EXPECT_NEAR((p.normal - Vec3::UnitZ()).norm(), 0.0, kTol);
+  EXPECT_NEAR((p.point - Vec3(3, -2, 0.995)).norm(), 0.0, kTol);    // midway: 0.99 and 1.0
+  EXPECT_NEAR(contact_sphere_plane(Vec3(0, 0, 3), 0.05, floor).gap, 1.95, kTol);    // far: still reported
+
+  const CylinderWall silo{Vec3(1, 1, 0), Vec3(0, 0, 3), 4.0};
+  const Vec3 radial = Vec3(3, 4, 0) / 5.0;
+  const ContactPoint c = contact_sphere_cylinder(Vec3(1, 1, 7) + 3.97 * radial, 0.05, silo);
+  EXPECT_NEAR(c.gap, -0.02, kTol);
+  EXPECT_NEAR((c.normal + radial).norm(), 0.0, kTol);
+  EXPECT_NEAR((c.point - (Vec3(1, 1, 7) + 4.01 * radial)).norm(), 0.0, kTol);
+  const ContactPoint axis = contact_sphere_cylinder(Vec3(1, 1, -2), 0.05, silo);    // on the axis
+  EXPECT_NEAR(axis.gap, 3.95, kTol);
+  EXPECT_NEAR(axis.normal.dot(Vec3::UnitZ()), 0.0, kTol);
+
+  for (const Vec3 &centre : {Vec3(0.3, 0.2, 1.01), Vec3(-1, 2, 1.3), Vec3(2.5, 3.2, -4)}) {
+    const auto ball = test::make_sphere(0.05);
+    const ContactPoint s = contact_sphere_plane(centre, 0.05, floor);
+    const ContactSet g = contact_grain_plane(ball, place(ball, centre), floor, 10.0, ws);
+    ASSERT_EQ(g.count, 1);
+    EXPECT_NEAR(s.gap, g[0].gap, kTol);
+    EXPECT_NEAR((s.point - g[0].point).norm(), 0.0, kTol);
+    EXPECT_NEAR((s.normal - g[0].normal).norm(), 0.0, kTol);
+    const ContactPoint sc = contact_sphere_cylinder(centre, 0.05, silo);
+    const ContactSet gc = contact_grain_cylinder(ball, place(ball, centre), silo, 10.0, ws);
+    ASSERT_EQ(gc.count, 1);
+    EXPECT_NEAR(sc.gap, gc[0].gap, kTol);
+    EXPECT_NEAR((sc.point - gc[0].point).norm(), 0.0, kTol);
+    EXPECT_NEAR((sc.normal - gc[0].normal).norm(), 0.0, kTol);
+  }
+  EXPECT_THROW(contact_sphere_plane(Vec3::Zero(), 0.1, PlaneWall{Vec3::Zero(), Vec3::Zero()}), ContactError);
+  EXPECT_THROW(contact_sphere_cylinder(Vec3::Zero(), 0.1, CylinderWall{Vec3::Zero(), Vec3::UnitZ(), -1.0}), ContactError);
+}
+
 // A box with edges parallel to the axis touches the wall with its two outer vertical
 // edges: 4 corners, all at distance sqrt((x+1)^2 + 1) from the axis.
 TEST(ContactCylinder, BoxAgainstWall)
