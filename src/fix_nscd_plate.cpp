@@ -9,6 +9,7 @@
 #include "error.h"
 #include "modify.h"
 #include "nscd_contact.h"
+#include "update.h"
 
 #include <algorithm>
 #include <cmath>
@@ -73,12 +74,11 @@ void FixNSCDPlate::setup(int /*vflag*/)
 {
   tagint first_above = MAXTAGINT, any_above;
   for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && avec->shape[i] != 0 && atom->x[i][2] >= z)
-      first_above = std::min(first_above, atom->tag[i]);
+    if ((atom->mask[i] & groupbit) && atom->x[i][2] >= z) first_above = std::min(first_above, atom->tag[i]);
   MPI_Allreduce(&first_above, &any_above, 1, MPI_LMP_TAGINT, MPI_MIN, world);
   if (any_above != MAXTAGINT)
-    error->all(FLERR, "fix nscd/plate {}: grain ID {} is above the plate (z = {}); put the plate "
-               "above all grains", id, any_above, z);
+    error->all(FLERR, "fix nscd/plate {}: atom ID {} is above the plate (z = {}); put the plate "
+               "above all grains and wire nodes of its group", id, any_above, z);
 }
 
 void FixNSCDPlate::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
@@ -109,8 +109,15 @@ nscd::SolverBody FixNSCDPlate::body(double dt) const
   b.inv_mass = 1.0 / mass;
   b.inv_mass_axes = nscd::Vec3(0.0, 0.0, 1.0);
   const double load_at_end = load() + load_rate * dt;
-  b.external_impulse = nscd::Vec3(0.0, 0.0, -dt * (load_at_end + mass * gravity));
+  const double wire = wire_force_in(update->ntimestep).z();    // the wire pushing up on it
+  b.external_impulse = nscd::Vec3(0.0, 0.0, dt * (wire - load_at_end - mass * gravity));
   return b;
+}
+
+nscd::ContactPoint FixNSCDPlate::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
+{
+  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z + tau * vz), nscd::Vec3(0.0, 0.0, -1.0)};
+  return nscd::contact_sphere_plane(centre, radius, face);
 }
 
 void FixNSCDPlate::take_body(const nscd::SolverBody &solved, double dt, double theta)
@@ -134,7 +141,7 @@ double FixNSCDPlate::compute_vector(int n)
   switch (n) {
     case Z: return z;
     case VZ: return vz;
-    case REACTION: return reaction;
+    case REACTION: return reaction + wire_force_in(update->ntimestep).z();    // grains + wire
     case LOAD: return load();
     case DISPLACEMENT: return z - z_start;
   }

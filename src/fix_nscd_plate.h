@@ -37,6 +37,9 @@ class FixNSCDPlate : public Fix, public NSCDBoundary {
   nscd::SolverBody body(double dt) const override;
   void set_body_index(int index) override { body_index = index; }
   void take_body(const nscd::SolverBody &, double dt, double theta) override;
+  nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
+  nscd::Vec3 surface_velocity() const override { return nscd::Vec3(0.0, 0.0, vz); }
+  double friction_coefficient() const override { return friction; }
 
  private:
   double z = 0.0, vz = 0.0, z_start = 0.0;

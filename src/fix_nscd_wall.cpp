@@ -113,18 +113,19 @@ void FixNSCDWall::init()
                "contacts); define fix nscd as well", id);
 }
 
-/* A grain whose centre lies beyond the wall surface would be shot back across it in one
-   step: that is a wrong wall (normal pointing out of the domain?) or a wrong grain. */
+/* A grain (or wire node) whose centre lies beyond the wall surface would be shot back
+   across it in one step: that is a wrong wall (normal pointing out of the domain?) or a
+   wrong atom. */
 void FixNSCDWall::setup(int /*vflag*/)
 {
   tagint first_outside = MAXTAGINT, any_outside;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    if (!(atom->mask[i] & groupbit)) continue;
     if (!inside(vec3(atom->x[i]))) first_outside = std::min(first_outside, atom->tag[i]);
   }
   MPI_Allreduce(&first_outside, &any_outside, 1, MPI_LMP_TAGINT, MPI_MIN, world);
   if (any_outside != MAXTAGINT)
-    error->all(FLERR, "fix nscd/wall {}: the centre of grain ID {} is outside the wall ({}); "
+    error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); "
                "check the wall's position and that its normal points into the domain", id,
                any_outside, kind == Kind::plane ? "behind the plane" : "outside the cylinder");
 }
@@ -170,9 +171,21 @@ void FixNSCDWall::advance(double dt)
   reference_point() += dt * velocity;
 }
 
+nscd::ContactPoint FixNSCDWall::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
+{
+  if (kind == Kind::plane) {
+    nscd::PlaneWall moved = plane;
+    moved.point += tau * velocity;
+    return nscd::contact_sphere_plane(centre, radius, moved);
+  }
+  nscd::CylinderWall moved = cylinder;
+  moved.axis_point += tau * velocity;
+  return nscd::contact_sphere_cylinder(centre, radius, moved);
+}
+
 double FixNSCDWall::compute_vector(int n)
 {
-  if (n < 3) return reaction[n];
+  if (n < 3) return reaction[n] + wire_force_in(update->ntimestep)[n];    // grains + wire
   return reference_point()[n - 3];
 }
 

@@ -33,6 +33,9 @@ class FixNSCDWall : public Fix, public NSCDBoundary {
   void append_contacts(std::vector<nscd::Contact> &, double activation) override;
   void take_impulses(const nscd::Contact *, int, double dt) override;
   void advance(double dt) override;
+  nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
+  nscd::Vec3 surface_velocity() const override { return velocity; }
+  double friction_coefficient() const override { return friction; }
 
  private:
   enum class Kind { plane, cylinder } kind;

@@ -14,9 +14,12 @@
 #include "memory.h"
 #include "modify.h"
 #include "nscd_arrays.h"
+#include "nscd_boundary.h"
+#include "nscd_contact.h"
 #include "nscd_gather.h"
 #include "neighbor.h"
 #include "update.h"
+#include "fix_nscd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +33,7 @@ using nscd::Vec3;
 namespace {
 enum Diagnostic {
   E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
-  GRAIN_FZ, DT_SP_STABLE
+  GRAIN_FZ, DT_SP_STABLE, N_WIRE_BOUNDARY
 };
 
 
@@ -162,6 +165,7 @@ void FixWire::init()
                "'newton on' or 'newton off on'");
   avec = AtomVecSpheropolyhedron::find(lmp, "fix wire");
   check_partners();
+  find_boundaries();
   plan_substeps();
 }
 
@@ -204,6 +208,26 @@ bool FixWire::acts_on_nodes(const Fix *other) const
     if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) mine = 1;
   MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
   return any != 0;
+}
+
+/* The walls and the plate: fix wire computes their soft contacts with the nodes of their
+   groups, with its own law and the boundary's friction (mu_s = mu_d). fix nscd must come
+   after fix wire: it solves the step with the wire's forces of the step, on the grains and
+   on the plate. */
+void FixWire::find_boundaries()
+{
+  boundaries.clear();
+  for (int f = 0; f < modify->nfix; f++) {
+    Fix *other = modify->fix[f];
+    if (dynamic_cast<FixNSCD *>(other) && f < modify->find_fix(id))
+      error->all(FLERR, "fix wire {} must be defined before fix nscd {}: fix nscd solves each step "
+                 "with the forces fix wire hands to the grains and the plate in that step", id, other->id);
+    auto *b = dynamic_cast<NSCDBoundary *>(other);
+    if (!b) continue;
+    nscd::wire::SoftContactLaw with_friction = law;
+    with_friction.mu_s = with_friction.mu_d = b->friction_coefficient();
+    boundaries.push_back({b, other->groupbit, (tagint) (boundary_tag(other->id) >> 34), with_friction});
+  }
 }
 
 nscd::wire::WireStiffness FixWire::stiffness() const
@@ -360,7 +384,7 @@ void FixWire::post_force(int /*vflag*/)
   measure_external_forces();
   hand_over_histories();
   find_candidates();
-  grain_forces.reset(ntotal);
+  grain_forces.reset(ntotal + (int) boundaries.size());    // boundary k at ntotal + k
   nscd::wire::run_subcycle(plan, corrector, nodes, grain_forces,
       [&](const nscd::wire::SubstepInfo &info, const std::vector<Vec3> &x,
           const std::vector<Vec3> &v, std::vector<Vec3> &f, nscd::wire::GrainForceAccumulator &) {
@@ -368,6 +392,7 @@ void FixWire::post_force(int /*vflag*/)
       });
   store_nodes();
   hand_forces_to_grains();
+  hand_forces_to_boundaries();
   keep_histories();
   sum_diagnostics_over_ranks();
 }
@@ -376,7 +401,12 @@ void FixWire::post_force(int /*vflag*/)
 void FixWire::sum_diagnostics_over_ranks()
 {
   static_assert(E_AXIAL == 0 && N_WIRE_GRAIN == 4, "the summed diagnostics come first");
-  MPI_Allreduce(MPI_IN_PLACE, &diagnostics[E_AXIAL], N_WIRE_GRAIN + 1, MPI_DOUBLE, MPI_SUM, world);
+  double sums[N_WIRE_GRAIN + 2];
+  std::copy(&diagnostics[E_AXIAL], &diagnostics[N_WIRE_GRAIN] + 1, sums);
+  sums[N_WIRE_GRAIN + 1] = diagnostics[N_WIRE_BOUNDARY];
+  MPI_Allreduce(MPI_IN_PLACE, sums, N_WIRE_GRAIN + 2, MPI_DOUBLE, MPI_SUM, world);
+  std::copy(sums, sums + N_WIRE_GRAIN + 1, &diagnostics[E_AXIAL]);
+  diagnostics[N_WIRE_BOUNDARY] = sums[N_WIRE_GRAIN + 1];
 }
 
 /* The owned wire nodes (shape 0) into the node set: Gear state from the per-atom array, with
@@ -516,6 +546,7 @@ void FixWire::find_candidates()
     find_wire_grain_candidates(found);
     find_wire_wire_candidates(found);
   }
+  if (law.k_n > 0.0) find_wire_boundary_candidates(found);
   for (Candidate &c : found) {
     const auto it = histories.find(c.key);
     if (it != histories.end()) c.history = it->second;
@@ -525,7 +556,7 @@ void FixWire::find_candidates()
   // rigid motion of the grains over the step at their current velocities
   motion.resize(atom->nlocal + atom->nghost);
   for (const Candidate &c : candidates)
-    if (c.b2 < 0) {
+    if (c.kind == Candidate::Kind::wire_grain) {
       const int j = c.b1;
       motion[j].start = avec->pose(j);
       motion[j].velocity = vec3(atom->v[j]);
@@ -583,7 +614,7 @@ void FixWire::find_wire_grain_candidates(std::vector<Candidate> &found)
       const int j = grain_atom[g];
       const double reach = e.half + wire_radius + avec->radius[j] + margin;
       if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) return;
-      found.push_back({e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
+      found.push_back({Candidate::Kind::wire_grain, e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
     });
   }
 }
@@ -611,8 +642,25 @@ void FixWire::find_wire_wire_candidates(std::vector<Candidate> &found)
       for (tagint s : ta)
         for (tagint t : tb)
           if (joined(s, t)) return;
-      found.push_back({A.a, A.b, B.a, B.b, {ta[0], ta[1], tb[0], tb[1]}, {}});
+      found.push_back({Candidate::Kind::wire_wire, A.a, A.b, B.a, B.b, {ta[0], ta[1], tb[0], tb[1]}, {}});
     });
+  }
+}
+
+/* Owned nodes of the group near a wall or the plate (gap below the skin plus the
+   boundary's travel in the step). A node's sphere is all of the wire a plane or a cylinder
+   can touch (lib/geometry/contact.h), so each node is one contact per boundary. */
+void FixWire::find_wire_boundary_candidates(std::vector<Candidate> &found)
+{
+  double **x = atom->x;
+  for (int k = 0; k < (int) boundaries.size(); k++) {
+    const BoundaryLink &b = boundaries[k];
+    const double reach = neighbor->skin + b.boundary->surface_velocity().norm() * update->dt;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (avec->shape[i] != 0 || !(atom->mask[i] & groupbit) || !(atom->mask[i] & b.groupbit)) continue;
+      if (b.boundary->touch_sphere(vec3(x[i]), wire_radius, 0.0).gap > reach) continue;
+      found.push_back({Candidate::Kind::wire_boundary, i, -1, k, -1, {atom->tag[i], 0, b.key, 0}, {}});
+    }
   }
 }
 
@@ -656,14 +704,18 @@ void FixWire::hand_over_histories()
 void FixWire::add_contact_forces(double tau, double dt)
 {
   double energy = 0.0;
-  int wire_wire = 0, wire_grain = 0;
+  int wire_wire = 0, wire_grain = 0, wire_boundary = 0;
   for (Candidate &c : candidates) {
-    if (c.b2 < 0) wire_grain += wire_grain_force(c, tau, dt, energy);
-    else wire_wire += wire_wire_force(c, dt, energy);
+    switch (c.kind) {
+      case Candidate::Kind::wire_wire: wire_wire += wire_wire_force(c, dt, energy); break;
+      case Candidate::Kind::wire_grain: wire_grain += wire_grain_force(c, tau, dt, energy); break;
+      case Candidate::Kind::wire_boundary: wire_boundary += wire_boundary_force(c, tau, dt, energy); break;
+    }
   }
   diagnostics[E_CONTACT] = energy;
   diagnostics[N_WIRE_WIRE] = wire_wire;
   diagnostics[N_WIRE_GRAIN] = wire_grain;
+  diagnostics[N_WIRE_BOUNDARY] = wire_boundary;
 }
 
 /* Element A = (a1, a2) against grain b1 at its pose after time tau. */
@@ -722,6 +774,38 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
   add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * r.force);
   energy += r.elastic_energy;
   return true;
+}
+
+/* Node c.a1 against boundary c.b1 where it stands after time tau. The boundary's share is
+   kept in grain_forces after the grains (index nlocal + nghost + c.b1). */
+bool FixWire::wire_boundary_force(Candidate &c, double tau, double dt, double &energy)
+{
+  const BoundaryLink &b = boundaries[c.b1];
+  const nscd::ContactPoint p = b.boundary->touch_sphere(vec3(atom->x[c.a1]), wire_radius, tau);
+  if (p.gap >= 0.0) {
+    c.history = {};
+    return false;
+  }
+  const Vec3 v_rel = vec3(&vbuf[3 * (size_t) c.a1]) - b.boundary->surface_velocity();
+  const nscd::wire::SoftContactForce r =
+      nscd::wire::soft_contact_force(b.law, p.normal, -p.gap, v_rel, dt, c.history);
+  add_to(&fbuf[3 * (size_t) c.a1], r.force);
+  grain_forces.add(atom->nlocal + atom->nghost + c.b1, -r.force, Vec3::Zero());
+  energy += r.elastic_energy;
+  return true;
+}
+
+/* Mean wire forces on the walls and the plate over the substeps, summed over the ranks, to
+   each boundary (on every rank) before fix nscd solves the step. */
+void FixWire::hand_forces_to_boundaries()
+{
+  if (boundaries.empty()) return;
+  const int first = atom->nlocal + atom->nghost;
+  std::vector<double> mine(3 * boundaries.size()), all(3 * boundaries.size());
+  for (size_t k = 0; k < boundaries.size(); k++) store(grain_forces.mean_force(first + (int) k), &mine[3 * k]);
+  MPI_Allreduce(mine.data(), all.data(), (int) all.size(), MPI_DOUBLE, MPI_SUM, world);
+  for (size_t k = 0; k < boundaries.size(); k++)
+    boundaries[k].boundary->take_wire_force(vec3(&all[3 * k]), update->ntimestep);
 }
 
 /* Mean wire->grain force and torque over the substeps, added to the owners' f and torque

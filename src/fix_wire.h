@@ -24,6 +24,7 @@ FixStyle(wire,FixWire);
 #include "wire/subcycle.h"
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -63,7 +64,8 @@ class FixWire : public Fix {
   int substeps() const { return plan.substeps; }
 
   // Identity of a contact, stable across steps and restarts: the two node tags of
-  // element A (ascending), then element B's two node tags, or (grain tag, 0).
+  // element A (ascending), then element B's two node tags, or (grain tag, 0); a node on a
+  // wall or the plate: (node tag, 0, boundary key < 0, 0).
   using ContactKey = std::array<tagint, 4>;
 
  private:
@@ -118,9 +120,19 @@ class FixWire : public Fix {
   nscd::PointGrid image_grid, grain_grid;
   std::vector<int> grain_atom;    // grain_grid point -> local atom index
 
+  // The walls and the loading plate (fixes with NSCDBoundary) the wire can touch.
+  struct BoundaryLink {
+    class NSCDBoundary *boundary;
+    int groupbit;                         // the nodes it touches: those of its fix group
+    tagint key;                           // < 0, from the fix ID: for contact keys
+    nscd::wire::SoftContactLaw law;       // fix wire's, with the boundary's friction
+  };
+  std::vector<BoundaryLink> boundaries;
+
   struct Candidate {
-    int a1, a2;    // element A's nodes (local indices)
-    int b1, b2;    // element B's nodes, or (grain, -1)
+    enum class Kind : std::uint8_t { wire_wire, wire_grain, wire_boundary } kind;
+    int a1, a2;    // element A's nodes (local indices), or (node, -1) on a boundary
+    int b1, b2;    // element B's nodes, (grain, -1), or (index in boundaries, -1)
     ContactKey key;
     nscd::wire::TangentialHistory history;
   };
@@ -130,7 +142,7 @@ class FixWire : public Fix {
   bool histories_on_every_rank = false;    // just read from a restart file
 
   // diagnostics of the last substep; see compute_vector()
-  std::array<double, 11> diagnostics{};
+  std::array<double, 12> diagnostics{};
 
   void parse_option(int narg, char **arg, int &iarg);
   void check_partners();
@@ -151,6 +163,8 @@ class FixWire : public Fix {
   void locate_element_images();
   void find_wire_grain_candidates(std::vector<Candidate> &found);
   void find_wire_wire_candidates(std::vector<Candidate> &found);
+  void find_boundaries();
+  void find_wire_boundary_candidates(std::vector<Candidate> &found);
   void sum_diagnostics_over_ranks();
   void substep_forces(const nscd::wire::SubstepInfo &info, const std::vector<nscd::Vec3> &x,
                       const std::vector<nscd::Vec3> &v, std::vector<nscd::Vec3> &f);
@@ -159,6 +173,8 @@ class FixWire : public Fix {
   void add_contact_forces(double tau, double dt);
   bool wire_grain_force(Candidate &c, double tau, double dt, double &energy);
   bool wire_wire_force(Candidate &c, double dt, double &energy);
+  bool wire_boundary_force(Candidate &c, double tau, double dt, double &energy);
+  void hand_forces_to_boundaries();
   void sum_ghost_forces(int columns);
   void hand_forces_to_grains();
   void keep_histories();

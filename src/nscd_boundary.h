@@ -5,6 +5,9 @@
 #ifndef LMP_NSCD_BOUNDARY_H
 #define LMP_NSCD_BOUNDARY_H
 
+#include "lmptype.h"
+
+#include "geometry/contact.h"
 #include "solver/contact_problem.h"
 
 #include <vector>
@@ -33,6 +36,31 @@ class NSCDBoundary {
   virtual nscd::SolverBody body(double /*dt*/) const { return nscd::SolverBody(); }
   virtual void set_body_index(int /*index*/) {}
   virtual void take_body(const nscd::SolverBody & /*solved*/, double /*dt*/, double /*theta*/) {}
+
+  // --- fix wire's soft contacts with the wire nodes of the boundary's group ---
+  // The contact of a sphere (a node dilated by the wire radius) with the boundary as it
+  // stands `tau` into the current step: it translates at surface_velocity() until fix nscd
+  // moves it at the end of the step.
+  virtual nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const = 0;
+  virtual nscd::Vec3 surface_velocity() const = 0;
+  virtual double friction_coefficient() const = 0;
+
+  // The force of the wire on the boundary in step `step`, averaged over its substeps and
+  // summed over the ranks: fix wire gives it on every rank in post_force, before fix nscd
+  // solves the step. Zero for a step without it (no fix wire, or it was unfixed).
+  void take_wire_force(const nscd::Vec3 &force, bigint step)
+  {
+    wire_force = force;
+    wire_force_step = step;
+  }
+  nscd::Vec3 wire_force_in(bigint step) const
+  {
+    return step == wire_force_step ? wire_force : nscd::Vec3::Zero();
+  }
+
+ private:
+  nscd::Vec3 wire_force = nscd::Vec3::Zero();
+  bigint wire_force_step = -1;
 };
 
 }    // namespace LAMMPS_NS

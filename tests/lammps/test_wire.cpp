@@ -841,3 +841,153 @@ TEST_F(WireBoundPyramidTest, WithoutTheLoopTheBaseSlidesApart)
   run("run 1200");
   EXPECT_LT(top_height(), 0.5 + 2.0 * std::sqrt(0.5) - 0.1);    // measured: 0.13 lower
 }
+
+// ---------------------------------------------------------------- the wire on walls and the plate
+
+// A straight wire of kNodes nodes (mass kMass, radius kRadius) along x, from x = -1 to 1,
+// lying on a floor (fix nscd/wall, friction kMu), with bonds and joints; a ball far away
+// (atom kNodes + 1, no gravity) gives fix nscd its grain group. Gravity acts on the wire
+// only, along (sin theta, 0, -cos theta) relative to the floor.
+class WireOnBoundaryTest : public WireTest {
+ protected:
+  static constexpr int kNodes = 9;
+  static constexpr double kMass = 0.01, kRadius = 0.05, kN = 1000.0, kMu = 0.5, kDamp = 0.02;
+
+  void wire_on_floor(bool floor = true, double y = 0.0, double z = kRadius)
+  {
+    std::vector<Point> atoms = straight_chain(kNodes, 0.25, kMass, -1.0, z);
+    for (Point &p : atoms) p.y = y;
+    atoms.push_back({3.0, 0.0, 0.5, 0.5, 2, 2});
+    scene(atoms, kNodes, true, 100.0, 0.25, 0.01);
+    commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0",
+              "group wire id 1:" + std::to_string(kNodes), "group balls type 2"});
+    if (floor) commands({"fix floor all nscd/wall plane 0 0 0 0 0 1 friction " + num(kMu)});
+  }
+  // Gravity along (v_gx, v_gy, v_gz): variables, so that a test can tilt it (a fix gravity
+  // defined after fix wire would act too late for the subcycle).
+  void wire_and_solver(const std::string &gravity = "0 0 -1")
+  {
+    std::istringstream g(gravity);
+    std::string gx, gy, gz;
+    g >> gx >> gy >> gz;
+    commands({"variable gx equal " + gx, "variable gy equal " + gy, "variable gz equal " + gz,
+              "fix g wire gravity 1.0 vector v_gx v_gy v_gz",
+              "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) +
+                  " gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.9 damp " + num(kDamp),
+              "fix solver balls nscd tolerance 1e-9 max_sweeps 500"});
+  }
+  void tilt(double theta)
+  {
+    commands({"variable gx equal " + num(std::sin(theta)), "variable gz equal " + num(-std::cos(theta))});
+  }
+  double mean_node(int d)
+  {
+    double sum = 0.0;
+    for (int k = 1; k <= kNodes; k++) sum += position(k)[d] / kNodes;
+    return sum;
+  }
+  double mean_velocity_x()
+  {
+    double mine = 0.0;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      if (lmp->atom->tag[i] <= kNodes) mine += lmp->atom->v[i][0] / kNodes;
+    return summed(mine);
+  }
+};
+
+// At rest each node sinks into the floor by its own weight over k_n, and the floor carries
+// the wire's weight (reported by the wall); every node is one contact.
+TEST_F(WireOnBoundaryTest, WireRestsOnTheFloorAtTheSpringOverlapAndTheFloorCarriesIt)
+{
+  wire_on_floor();
+  wire_and_solver();
+  run("run 3000");
+  const double weight = kNodes * kMass;
+  std::printf("[ wire on floor ] floor %.12g (weight %.12g), node z %.10g (closed form %.10g), contacts %g\n",
+              -fix_value("floor", 2), weight, position(5)[2], kRadius - kMass / kN, fix_value("w", 11));
+  EXPECT_NEAR(fix_value("floor", 2) / -weight, 1.0, 1e-6);    // the wire's force on the floor
+  EXPECT_NEAR(fix_value("floor", 0), 0.0, 1e-9);
+  for (int k = 1; k <= kNodes; k++) EXPECT_NEAR(position(k)[2], kRadius - kMass / kN, 1e-3 * kMass / kN) << "node " << k;
+  EXPECT_EQ(fix_value("w", 11), kNodes);    // wire-boundary contacts
+  EXPECT_EQ(fix_value("w", 4), 0.0);        // no wire-grain contact: the ball is far away
+  EXPECT_LT(kinetic_energy(1, kNodes), 1e-14);
+}
+
+// The floor's friction (mu of fix nscd/wall, static = dynamic for the wire) holds the wire
+// on a slope below tan(theta) = mu, with the floor taking the wire's weight along the slope;
+// above it the wire slides with acceleration g (sin theta - mu cos theta).
+TEST_F(WireOnBoundaryTest, FloorFrictionHoldsTheWireBelowTheSlopeOfMuAndItSlidesAbove)
+{
+  wire_on_floor();
+  wire_and_solver();
+  run("run 1000");
+  const double held = std::atan(0.9 * kMu), slides = std::atan(1.1 * kMu), weight = kNodes * kMass;
+  tilt(held);
+  run("run 2000");
+  const double x_held = mean_node(0);
+  const double floor_x = fix_value("floor", 0);
+  tilt(slides);
+  run("run 300");
+  // sliding: dv/dt = A - k v with A = g (sin - mu cos) and the nodes' damping k = C / m
+  const double v0 = mean_velocity_x(), T = 0.5, A = std::sin(slides) - kMu * std::cos(slides), k = kDamp / kMass;
+  run("run 500");
+  const double gained = mean_velocity_x() - v0, expected = (A / k - v0) * (1.0 - std::exp(-k * T));
+  std::printf("[ wire on slope ] held at 0.9 mu: moved %.3g, floor along x %.10g (weight along the "
+              "slope %.10g); sliding at 1.1 mu: gains %.6g in velocity (closed form %.6g)\n",
+              x_held, floor_x, weight * std::sin(held), gained, expected);
+  EXPECT_LT(std::abs(x_held), 1e-4);    // tangential springs and their transient (2.7e-5)
+  EXPECT_NEAR(floor_x / (weight * std::sin(held)), 1.0, 1e-6);
+  EXPECT_NEAR(gained / expected, 1.0, 1e-2);
+}
+
+// A loading plate (fix nscd/plate, weight W) falls onto the wire lying on the floor and
+// rests where each node's springs carry W / n from above and W / n + m g from below.
+TEST_F(WireOnBoundaryTest, PlateRestsOnTheWireAtTheClosedFormHeight)
+{
+  const double W = 1.0;
+  wire_on_floor();
+  commands({"fix plate wire nscd/plate " + num(2 * kRadius) + " mass " + num(W) + " gravity 1"});
+  wire_and_solver();
+  run("run 12000");    // the plate's bounce on the wire's springs decays by e every ~440 steps
+  const double from_plate = W / kNodes, weight = kNodes * kMass;
+  const double z = 2 * kRadius - (from_plate + kMass) / kN - from_plate / kN;
+  std::printf("[ plate on wire ] plate z %.12g (closed form %.12g), reaction %.10g (W %g), floor %.10g\n",
+              fix_value("plate", 0), z, fix_value("plate", 2), W, fix_value("floor", 2));
+  EXPECT_NEAR(fix_value("plate", 0), z, 1e-3 * from_plate / kN);
+  EXPECT_NEAR(fix_value("plate", 2) / W, 1.0, 1e-6);             // grains + wire under the plate
+  EXPECT_NEAR(fix_value("floor", 2) / -(W + weight), 1.0, 1e-6);
+  EXPECT_LT(std::abs(fix_value("plate", 1)), 1e-7);
+}
+
+// A wire parallel to the axis of a cylinder wall, pushed sideways against it by gravity along x:
+// each node sinks into the wall by m g / k_n and the wall takes the weight.
+TEST_F(WireOnBoundaryTest, CylinderWallHoldsTheWireAgainstSidewaysGravity)
+{
+  wire_on_floor(false, kRadius, 0.0);    // touching the wall at +y
+  commands({"fix silo wire nscd/wall cylinder 0 0 0 1 0 0 " + num(2 * kRadius)});
+  wire_and_solver("0 1 0");
+  run("run 3000");
+  const double weight = kNodes * kMass;
+  std::printf("[ wire in cylinder ] wall %.10g (weight %.10g), node y %.10g (closed form %.10g)\n",
+              fix_value("silo", 1), weight, position(5)[1], kRadius + kMass / kN);
+  EXPECT_NEAR(fix_value("silo", 1) / weight, 1.0, 1e-6);
+  for (int k = 1; k <= kNodes; k++) EXPECT_NEAR(position(k)[1], kRadius + kMass / kN, 1e-3 * kMass / kN) << "node " << k;
+}
+
+TEST_F(WireOnBoundaryTest, FixWireAfterFixNSCDIsANamedError)
+{
+  wire_on_floor();
+  commands({"fix solver balls nscd"});
+  std::string message = error_of("fix w wire wire radius 0.05 k_n 1000");
+  if (message.empty()) message = error_of("run 0");
+  EXPECT_NE(message.find("must be defined before fix nscd"), std::string::npos) << message;
+}
+
+TEST_F(WireOnBoundaryTest, NodeBehindAWallIsANamedError)
+{
+  wire_on_floor();
+  commands({"fix high wire nscd/wall plane 0 0 " + num(2 * kRadius) + " 0 0 1"});
+  wire_and_solver();
+  const std::string message = error_of("run 0");
+  EXPECT_NE(message.find("atom ID 1 is outside the wall"), std::string::npos) << message;
+}
