@@ -649,7 +649,11 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 void FixNSCD::write_restart(FILE *fp)
 {
   std::vector<nscd::ImpulseRecord> mine;
-  for (const nscd::Contact &c : problem.contacts) mine.push_back(nscd::record_of(c));
+  if (!restored_contacts.empty()) {    // read from a restart, not solved since: all on every rank
+    if (comm->me == 0) mine = restored_contacts;
+  } else {
+    for (const nscd::Contact &c : problem.contacts) mine.push_back(nscd::record_of(c));
+  }
   const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
   if (comm->me == 0) {    // size of the block, then the record count, then the records
     const int count = (int) all.size();

@@ -19,7 +19,6 @@
 #include "nscd_gather.h"
 #include "neighbor.h"
 #include "update.h"
-#include "fix_nscd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,6 +92,9 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
     } catch (std::exception &e) {
       error->all(FLERR, "fix wire: {}", e.what());
     }
+    if (!(wire_radius > 0.0))
+      error->all(FLERR, "fix wire: contacts (k_n {}) need a wire radius > 0: elements of radius 0 "
+                 "never touch; give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
   }
   corrector = nscd::wire::gear5_corrector_coefficients(nscd::wire::GearCorrector::ThreeSixteenths);
 
@@ -211,17 +213,14 @@ bool FixWire::acts_on_nodes(const Fix *other) const
 }
 
 /* The walls and the plate: fix wire computes their soft contacts with the nodes of their
-   groups, with its own law and the boundary's friction (mu_s = mu_d). fix nscd must come
-   after fix wire: it solves the step with the wire's forces of the step, on the grains and
-   on the plate. */
+   groups, with its own law and the boundary's friction (mu_s = mu_d). fix nscd solves the
+   step in final_integrate, after this post_force: it sees the wire's forces of the step on
+   the grains and on the plate whatever the order of the fixes. */
 void FixWire::find_boundaries()
 {
   boundaries.clear();
   for (int f = 0; f < modify->nfix; f++) {
     Fix *other = modify->fix[f];
-    if (dynamic_cast<FixNSCD *>(other) && f < modify->find_fix(id))
-      error->all(FLERR, "fix wire {} must be defined before fix nscd {}: fix nscd solves each step "
-                 "with the forces fix wire hands to the grains and the plate in that step", id, other->id);
     auto *b = dynamic_cast<NSCDBoundary *>(other);
     if (!b) continue;
     nscd::wire::SoftContactLaw with_friction = law;
@@ -286,6 +285,9 @@ void FixWire::plan_substeps()
 
 void FixWire::setup(int /*vflag*/)
 {
+  // Atoms may have changed rank since the last step (balance, a box change) while the
+  // neighbour build of this setup keeps the last step's time stamp: hand over anyway.
+  histories_placed_at = -1;
   gather_elements();
   check_ghost_cutoff();
   rescale_states(plan.dt_sp);
@@ -305,25 +307,17 @@ void FixWire::reset_dt()
    stores its bond. newton_bond on: each element is in exactly one rank's bond list. */
 void FixWire::gather_elements()
 {
-  std::vector<tagint> mine;
+  std::vector<std::array<tagint, 2>> mine;
   double longest = 0.0;
   if (bond)
     for (int n = 0; n < neighbor->nbondlist; n++) {
       const int *b = neighbor->bondlist[n];
       const tagint p = atom->tag[b[0]], q = atom->tag[b[1]];
-      mine.insert(mine.end(), {std::min(p, q), std::max(p, q)});
+      mine.push_back({std::min(p, q), std::max(p, q)});
       longest = std::max({longest, bond->rest_length(b[2]), (vec3(atom->x[b[0]]) - vec3(atom->x[b[1]])).norm()});
     }
   MPI_Allreduce(&longest, &longest_element, 1, MPI_DOUBLE, MPI_MAX, world);
-  int count = (int) mine.size();
-  std::vector<int> counts(comm->nprocs), offsets(comm->nprocs, 0);
-  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  for (int r = 1; r < comm->nprocs; r++) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<tagint> all(offsets.back() + counts.back());
-  MPI_Allgatherv(mine.data(), count, MPI_LMP_TAGINT, all.data(), counts.data(), offsets.data(),
-                 MPI_LMP_TAGINT, world);
-  elements.clear();
-  for (size_t k = 0; k < all.size(); k += 2) elements.push_back({all[k], all[k + 1]});
+  elements = gather_records(mine, world, true);
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
 }
@@ -539,12 +533,16 @@ double FixWire::add_elastic_forces(double *energy_axial, double *energy_bending)
    joined by one element are skipped: their contact is the wire's own bending. */
 void FixWire::find_candidates()
 {
-  share_grain_velocities();
   std::vector<Candidate> found;
-  if (law.k_n > 0.0 && !elements.empty()) {
+  if (law.k_n > 0.0 && !elements.empty()) {    // the same on every rank: the collective is safe
+    share_grain_velocities();
     locate_element_images();
-    find_wire_grain_candidates(found);
-    find_wire_wire_candidates(found);
+    const bool computes_some = std::any_of(images.begin(), images.end(),
+                                           [&](const ElementImage &e) { return e.a < atom->nlocal; });
+    if (computes_some) {
+      find_wire_grain_candidates(found);
+      find_wire_wire_candidates(found);
+    }
   }
   if (law.k_n > 0.0) find_wire_boundary_candidates(found);
   for (Candidate &c : found) {
@@ -612,6 +610,7 @@ void FixWire::find_wire_grain_candidates(std::vector<Candidate> &found)
     if (e.a >= atom->nlocal) continue;
     grain_grid.for_each_near(e.centre, e.half + wire_radius + largest + margin, [&](int g) {
       const int j = grain_atom[g];
+      if (domain->closest_image(e.a, atom->map(tag[j])) != j) return;    // one image per grain
       const double reach = e.half + wire_radius + avec->radius[j] + margin;
       if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) return;
       found.push_back({Candidate::Kind::wire_grain, e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
@@ -636,6 +635,7 @@ void FixWire::find_wire_wire_candidates(std::vector<Candidate> &found)
     image_grid.for_each_near(A.centre, A.half + longest_half + 2.0 * wire_radius + margin, [&](int k) {
       const ElementImage &B = images[k];
       if (B.element <= A.element) return;    // the pair belongs to the lower element's owner
+      if (domain->closest_image(A.a, atom->map(tag[B.a])) != B.a) return;    // one image per element
       const double reach = A.half + B.half + 2.0 * wire_radius + margin;
       if ((A.centre - B.centre).squaredNorm() > reach * reach) return;
       const tagint tb[2] = {tag[B.a], tag[B.b]};
@@ -976,7 +976,9 @@ int FixWire::maxsize_restart()
 void FixWire::write_restart(FILE *fp)
 {
   std::vector<StoredHistory> mine;
-  for (const auto &entry : histories) mine.push_back(stored(entry.first, entry.second));
+  // Read from a restart and no step since: every rank holds them all; write them once.
+  if (!histories_on_every_rank || comm->me == 0)
+    for (const auto &entry : histories) mine.push_back(stored(entry.first, entry.second));
   const std::vector<StoredHistory> all = gather_records(mine, world, false);
   if (comm->me == 0) {
     const double header[2] = {state_dt, (double) all.size()};

@@ -576,7 +576,8 @@ TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
               "write_restart " + scratch("one_rank.restart"), "run 200"});
     for (tagint k = 1; k <= 4; k++) {
       const int i = lmp->atom->map(k);
-      ASSERT_GE(i, 0);
+      EXPECT_GE(i, 0);    // (no ASSERT: the other ranks wait in MPI_Bcast below)
+      if (i < 0) continue;
       for (int d = 0; d < 3; d++) on_one_rank[3 * (k - 1) + d] = lmp->atom->x[i][d];
     }
     delete lmp;
