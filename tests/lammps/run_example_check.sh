@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Runs an example deck in a scratch copy of its folder and checks what it wrote.
-#   run_example_check.sh LMP EXAMPLE_DIR SCRATCH_DIR
+#   run_example_check.sh LMP EXAMPLE_DIR SCRATCH_DIR [LAUNCHER ...]
+# LAUNCHER (e.g. mpiexec -np 2) runs LMP under MPI.
 set -euo pipefail
 lmp=$1; src=$2; work=$3
+shift 3
+launch=("$@")
 rm -rf "$work"; mkdir -p "$work"; cp "$src"/in.* "$work"/
 cd "$work"
 deck=$(ls in.* | head -n 1)
@@ -19,7 +22,7 @@ case "$name" in
     ;;
   *)       # validation decks: they print "check NAME: passed" or exit with status 1
     cp "$src"/*.shapes . 2>/dev/null || true
-    "$lmp" -in "$deck" -log log.lammps > screen.txt
+    "${launch[@]}" "$lmp" -in "$deck" -log log.lammps > screen.txt
     grep -q "^check .*: passed" log.lammps
     ;;
 esac

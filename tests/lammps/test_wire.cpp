@@ -63,6 +63,8 @@ struct Point {
 
 class WireTest : public LammpsTest {
  protected:
+  std::string boundary = "f f f";    // of the scenes load_scene reads
+
   // A data file for `atom_style hybrid spheropolyhedron angle`: atoms in order, the first
   // `chain` of them joined into one open wire (bonds, and angles if `angles`).
   void write_data(const std::string &path, const std::vector<Point> &atoms, int chain, bool angles,
@@ -127,7 +129,7 @@ class WireTest : public LammpsTest {
   {
     MPI_Barrier(MPI_COMM_WORLD);
     commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
-              "boundary f f f"});
+              "boundary " + boundary});
     if (rank() == 0) std::ofstream(scratch("shapes")) << kShapes;
     MPI_Barrier(MPI_COMM_WORLD);
     // ranks side by side in x and y: the wires of these scenes lie mostly flat, so they
@@ -554,10 +556,11 @@ class CrossingWiresTest : public WireTest {
   // Element A: atoms 1, 2 along x, held (not in the group). Element B: atoms 3, 4 along y,
   // crossing A at its middle and just touching it, pressed down by kNormal and pulled along
   // x by the variable fx (both split evenly over its two nodes).
-  void crossing(const std::string &friction = "mu_s " + num(kMuS) + " mu_d " + num(kMuD))
+  // x0 moves the crossing along x (with periodic x, x0 = 5 puts it on the box's boundary).
+  void crossing(const std::string &friction = "mu_s " + num(kMuS) + " mu_d " + num(kMuD), double x0 = 0.0)
   {
-    const std::vector<Point> atoms = {{-0.5, 0, 0, kMass}, {0.5, 0, 0, kMass},
-                                      {0, -0.5, 2 * kRadius, kMass}, {0, 0.5, 2 * kRadius, kMass}};
+    const std::vector<Point> atoms = {{x0 - 0.5, 0, 0, kMass}, {x0 + 0.5, 0, 0, kMass},
+                                      {x0, -0.5, 2 * kRadius, kMass}, {x0, 0.5, 2 * kRadius, kMass}};
     const std::string data = scratch("crossing.data");
     write_topology(data, atoms, {{1, 2}, {3, 4}}, {});
     load_scene(data, 100.0, 1.0, 0.0);
@@ -657,6 +660,29 @@ double CrossingWiresTest::moved_across_balance(bool rebuild_every_step)
 TEST_F(CrossingWiresTest, StickingHistoryFollowsTheContactToAnotherRank)
 {
   EXPECT_NEAR(moved_across_balance(false), 0.0, 1e-9);
+}
+
+// The same crossing on the boundary of a periodic box (A's nodes at x = 4.5 and -4.5, B on
+// x = +-5): one contact, computed once, at the same overlap, and it sticks under 0.3 f_n
+// (moved 3e-5 = 0.3 f_n / k_t, the same as at x = 0 in a closed box).
+TEST_F(CrossingWiresTest, AcrossAPeriodicBoundaryTheContactIsFoundOnceAndSticks)
+{
+  boundary = "p f f";
+  crossing("mu_s " + num(kMuS) + " mu_d " + num(kMuD), 5.0);
+  run("run 300");
+  const double overlap = 2 * kRadius - b_position(2);
+  EXPECT_NEAR(overlap / (kNormal / kN), 1.0, 1e-3);
+  EXPECT_EQ(fix_value("w", 3), 1.0);    // wire-wire contacts, summed over the ranks
+  auto x3 = [&]() { return std::fmod(position(3)[0] + 10.0, 10.0); };    // B's node, unwrapped
+  const double before = x3();
+  run("variable fx equal ramp(0," + num(0.15 * kNormal) + ")");    // to 0.3 f_n in all, slowly
+  run("run 300");
+  pull(0.3 * kNormal);
+  run("run 100");
+  std::printf("[ crossing, periodic ] overlap %.6g (f_n/k_n %.4g), contacts %g, B moved by %.3g under 0.3 f_n\n",
+              overlap, kNormal / kN, fix_value("w", 3), x3() - before);
+  // sticking: the tangential spring only, 0.3 f_n / k_t = 3e-5 (without friction: ~ 0.7)
+  EXPECT_NEAR(x3() - before, 0.3 * kNormal / 1e4, 1e-5);
 }
 
 TEST_F(CrossingWiresTest, HistoryIsHandedOverWhenTheLastStepRebuiltTheLists)
