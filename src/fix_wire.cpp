@@ -320,6 +320,29 @@ void FixWire::gather_elements()
   elements = gather_records(mine, world, true);
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  std::map<tagint, int> count;
+  for (const auto &e : elements) {
+    count[e[0]]++;
+    count[e[1]]++;
+  }
+  elements_at_node.clear();
+  for (const auto &e : elements) elements_at_node.push_back({count[e[0]], count[e[1]]});
+}
+
+/* The sphere around a wire node belongs to every element meeting there: a contact found at
+   an element's end sphere is split evenly among them, so a node resting on a face pushes
+   as hard as a node on a wall whichever elements report it, and a contact point sliding
+   along the wire keeps its force as it passes a node. A point inside an element is its own. */
+double FixWire::share(int element, nscd::SegmentPart part) const
+{
+  if (part == nscd::SegmentPart::inside) return 1.0;
+  return 1.0 / elements_at_node[element][part == nscd::SegmentPart::start ? 0 : 1];
+}
+
+FixWire::ContactKey FixWire::history_key(const Candidate &c, int slot)
+{
+  if (c.kind != Candidate::Kind::wire_grain) return c.key;
+  return {c.key[0], c.key[1], c.key[2], slot};
 }
 
 /* True if nodes p and q are the same node or the two ends of one element. */
@@ -545,10 +568,11 @@ void FixWire::find_candidates()
     }
   }
   if (law.k_n > 0.0) find_wire_boundary_candidates(found);
-  for (Candidate &c : found) {
-    const auto it = histories.find(c.key);
-    if (it != histories.end()) c.history = it->second;
-  }
+  for (Candidate &c : found)
+    for (int slot = 0; slot < slots_of(c); slot++) {
+      const auto it = histories.find(history_key(c, slot));
+      if (it != histories.end()) c.history[slot] = it->second;
+    }
   candidates.swap(found);
 
   // rigid motion of the grains over the step at their current velocities
@@ -613,7 +637,8 @@ void FixWire::find_wire_grain_candidates(std::vector<Candidate> &found)
       if (domain->closest_image(e.a, atom->map(tag[j])) != j) return;    // one image per grain
       const double reach = e.half + wire_radius + avec->radius[j] + margin;
       if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) return;
-      found.push_back({Candidate::Kind::wire_grain, e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
+      found.push_back({Candidate::Kind::wire_grain, e.a, e.b, j, -1, e.element, -1,
+                       {tag[e.a], tag[e.b], tag[j], 0}, {}});
     });
   }
 }
@@ -642,7 +667,8 @@ void FixWire::find_wire_wire_candidates(std::vector<Candidate> &found)
       for (tagint s : ta)
         for (tagint t : tb)
           if (joined(s, t)) return;
-      found.push_back({Candidate::Kind::wire_wire, A.a, A.b, B.a, B.b, {ta[0], ta[1], tb[0], tb[1]}, {}});
+      found.push_back({Candidate::Kind::wire_wire, A.a, A.b, B.a, B.b, A.element, B.element,
+                       {ta[0], ta[1], tb[0], tb[1]}, {}});
     });
   }
 }
@@ -659,7 +685,7 @@ void FixWire::find_wire_boundary_candidates(std::vector<Candidate> &found)
     for (int i = 0; i < atom->nlocal; i++) {
       if (avec->shape[i] != 0 || !(atom->mask[i] & groupbit) || !(atom->mask[i] & b.groupbit)) continue;
       if (b.boundary->touch_sphere(vec3(x[i]), wire_radius, 0.0).gap > reach) continue;
-      found.push_back({Candidate::Kind::wire_boundary, i, -1, k, -1, {atom->tag[i], 0, b.key, 0}, {}});
+      found.push_back({Candidate::Kind::wire_boundary, i, -1, k, -1, -1, -1, {atom->tag[i], 0, b.key, 0}, {}});
     }
   }
 }
@@ -718,35 +744,48 @@ void FixWire::add_contact_forces(double tau, double dt)
   diagnostics[N_WIRE_BOUNDARY] = wire_boundary;
 }
 
-/* Element A = (a1, a2) against grain b1 at its pose after time tau. */
+/* Element A = (a1, a2) against grain b1 at its pose after time tau: one soft contact per
+   point (the ends of the touching stretch), each with its own overlap and history. */
 bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &energy)
 {
   double **x = atom->x;
   const nscd::wire::GrainMotion &m = motion[c.b1];
   const nscd::Pose pose = m.pose_at(tau);
   const nscd::Segment segment{vec3(x[c.a1]), vec3(x[c.a2]), wire_radius};
-  std::optional<nscd::SegmentContact> contact;
-  nscd::wire::LeverWeights w;
+  nscd::SegmentGrainContact contact;
+  std::array<nscd::wire::LeverWeights, nscd::SegmentGrainContact::kMaxPoints> w{};
   try {
     contact = nscd::contact_segment_grain(segment, avec->shape_of(c.b1), pose, 0.0, workspace);
-    if (!contact || contact->gap >= 0.0) {
-      c.history = {};
-      return false;
-    }
-    w = nscd::wire::lever_weights(contact->s_i);
+    for (int k = 0; k < contact.count; k++) w[k] = nscd::wire::lever_weights(contact[k].s_i);
   } catch (std::exception &e) {
     error->one(FLERR, "fix wire: contact of the element of atoms {}-{} with grain ID {} failed: {}",
                atom->tag[c.a1], atom->tag[c.a2], atom->tag[c.b1], e.what());
   }
-  const Vec3 v_wire = w.on_a * vec3(&vbuf[3 * (size_t) c.a1]) + w.on_b * vec3(&vbuf[3 * (size_t) c.a2]);
-  const Vec3 v_rel = v_wire - m.point_velocity(contact->point, tau);
-  const nscd::wire::SoftContactForce r =
-      nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history);
-  add_to(&fbuf[3 * (size_t) c.a1], w.on_a * r.force);
-  add_to(&fbuf[3 * (size_t) c.a2], w.on_b * r.force);
-  grain_forces.add(c.b1, -r.force, contact->point - pose.position);
-  energy += r.elastic_energy;
-  return true;
+  std::array<bool, kSlots> closed{};
+  int inside = 0;
+  for (int k = 0; k < contact.count; k++) {
+    const nscd::SegmentContact &p = contact[k];
+    const nscd::SegmentPart part = nscd::segment_part_i(p);
+    const int slot = part == nscd::SegmentPart::start ? 0 : part == nscd::SegmentPart::end ? 1 : 2 + inside++;
+    if (p.gap >= 0.0) continue;
+    closed[slot] = true;
+    const Vec3 v_wire = w[k].on_a * vec3(&vbuf[3 * (size_t) c.a1]) + w[k].on_b * vec3(&vbuf[3 * (size_t) c.a2]);
+    const Vec3 v_rel = v_wire - m.point_velocity(p.point, tau);
+    const nscd::wire::SoftContactForce r =
+        nscd::wire::soft_contact_force(law, p.normal, -p.gap, v_rel, dt, c.history[slot]);
+    const double weight = share(c.element_a, part);
+    const Vec3 force = weight * r.force;
+    add_to(&fbuf[3 * (size_t) c.a1], w[k].on_a * force);
+    add_to(&fbuf[3 * (size_t) c.a2], w[k].on_b * force);
+    grain_forces.add(c.b1, -force, p.point - pose.position);
+    energy += weight * r.elastic_energy;
+  }
+  bool any = false;
+  for (int slot = 0; slot < kSlots; slot++) {
+    if (!closed[slot]) c.history[slot] = {};
+    any = any || closed[slot];
+  }
+  return any;
 }
 
 /* Element A = (a1, a2) against element B = (b1, b2); the force on A, minus on B, each
@@ -758,7 +797,7 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
   const nscd::Segment B{vec3(x[c.b1]), vec3(x[c.b2]), wire_radius};
   const auto contact = nscd::contact_segments(A, B, 0.0);
   if (!contact || contact->gap >= 0.0) {
-    c.history = {};
+    c.history[0] = {};
     return false;
   }
   auto node_v = [&](int i) { return vec3(&vbuf[3 * (size_t) i]); };
@@ -767,12 +806,15 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
   const Vec3 v_rel = (wa.on_a * node_v(c.a1) + wa.on_b * node_v(c.a2)) -
       (wb.on_a * node_v(c.b1) + wb.on_b * node_v(c.b2));
   const nscd::wire::SoftContactForce r =
-      nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history);
-  add_to(&fbuf[3 * (size_t) c.a1], wa.on_a * r.force);
-  add_to(&fbuf[3 * (size_t) c.a2], wa.on_b * r.force);
-  add_to(&fbuf[3 * (size_t) c.b1], -wb.on_a * r.force);
-  add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * r.force);
-  energy += r.elastic_energy;
+      nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history[0]);
+  const double weight = share(c.element_a, nscd::segment_part_i(*contact)) *
+      share(c.element_b, nscd::segment_part_j(*contact));
+  const Vec3 force = weight * r.force;
+  add_to(&fbuf[3 * (size_t) c.a1], wa.on_a * force);
+  add_to(&fbuf[3 * (size_t) c.a2], wa.on_b * force);
+  add_to(&fbuf[3 * (size_t) c.b1], -wb.on_a * force);
+  add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * force);
+  energy += weight * r.elastic_energy;
   return true;
 }
 
@@ -783,12 +825,12 @@ bool FixWire::wire_boundary_force(Candidate &c, double tau, double dt, double &e
   const BoundaryLink &b = boundaries[c.b1];
   const nscd::ContactPoint p = b.boundary->touch_sphere(vec3(atom->x[c.a1]), wire_radius, tau);
   if (p.gap >= 0.0) {
-    c.history = {};
+    c.history[0] = {};
     return false;
   }
   const Vec3 v_rel = vec3(&vbuf[3 * (size_t) c.a1]) - b.boundary->surface_velocity();
   const nscd::wire::SoftContactForce r =
-      nscd::wire::soft_contact_force(b.law, p.normal, -p.gap, v_rel, dt, c.history);
+      nscd::wire::soft_contact_force(b.law, p.normal, -p.gap, v_rel, dt, c.history[0]);
   add_to(&fbuf[3 * (size_t) c.a1], r.force);
   grain_forces.add(atom->nlocal + atom->nghost + c.b1, -r.force, Vec3::Zero());
   energy += r.elastic_energy;
@@ -842,10 +884,12 @@ void FixWire::hand_forces_to_grains()
 void FixWire::keep_histories()
 {
   histories.clear();
-  for (const Candidate &c : candidates) {
-    const nscd::wire::TangentialHistory &h = c.history;
-    if (h.xi[0] != 0.0 || h.xi[1] != 0.0 || h.xi[2] != 0.0 || h.sliding != 0.0) histories[c.key] = h;
-  }
+  for (const Candidate &c : candidates)
+    for (int slot = 0; slot < slots_of(c); slot++) {
+      const nscd::wire::TangentialHistory &h = c.history[slot];
+      if (h.xi[0] != 0.0 || h.xi[1] != 0.0 || h.xi[2] != 0.0 || h.sliding != 0.0)
+        histories[history_key(c, slot)] = h;
+    }
 }
 
 double FixWire::compute_vector(int n)

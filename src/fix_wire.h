@@ -64,8 +64,8 @@ class FixWire : public Fix {
   int substeps() const { return plan.substeps; }
 
   // Identity of a contact, stable across steps and restarts: the two node tags of
-  // element A (ascending), then element B's two node tags, or (grain tag, 0); a node on a
-  // wall or the plate: (node tag, 0, boundary key < 0, 0).
+  // element A (ascending), then element B's two node tags, or (grain tag, slot of the
+  // point: see kSlots); a node on a wall or the plate: (node tag, 0, boundary key < 0, 0).
   using ContactKey = std::array<tagint, 4>;
 
  private:
@@ -106,6 +106,7 @@ class FixWire : public Fix {
   // Wire topology, the same on every rank: the elements as (lower tag, higher tag), sorted.
   // Gathered at setup from the bond lists of all ranks.
   std::vector<std::array<tagint, 2>> elements;
+  std::vector<std::array<int, 2>> elements_at_node;    // per element: at its two nodes
   double longest_element = 0.0;    // rest or current, the longer, at setup
 
   // One copy of an element on this rank: nodes a (first node, or an image of it) and b
@@ -129,13 +130,20 @@ class FixWire : public Fix {
   };
   std::vector<BoundaryLink> boundaries;
 
+  // Friction histories of one pair: a wire-grain pair has a slot per point it can touch
+  // with (its start sphere, its end sphere, two points inside), other pairs one point.
+  static constexpr int kSlots = 4;
   struct Candidate {
     enum class Kind : std::uint8_t { wire_wire, wire_grain, wire_boundary } kind;
     int a1, a2;    // element A's nodes (local indices), or (node, -1) on a boundary
     int b1, b2;    // element B's nodes, (grain, -1), or (index in boundaries, -1)
-    ContactKey key;
-    nscd::wire::TangentialHistory history;
+    int element_a, element_b;    // indices in `elements`, or -1
+    ContactKey key;    // of the pair; histories are kept under history_key()
+    std::array<nscd::wire::TangentialHistory, kSlots> history;
   };
+  static int slots_of(const Candidate &c) { return c.kind == Candidate::Kind::wire_grain ? kSlots : 1; }
+  static ContactKey history_key(const Candidate &c, int slot);
+  double share(int element, nscd::SegmentPart part) const;
   std::vector<Candidate> candidates;
   std::map<ContactKey, nscd::wire::TangentialHistory> histories;    // between steps
   bigint histories_placed_at = -1;    // neighbor build after which histories were handed over

@@ -322,18 +322,18 @@ ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
   return out;
 }
 
-std::optional<SegmentContact> contact_segment_grain(const Segment &segment,
-                                                    const Spheropolyhedron &shape,
-                                                    const Pose &pose, double activation,
-                                                    ContactWorkspace &ws)
+SegmentGrainContact contact_segment_grain(const Segment &segment, const Spheropolyhedron &shape,
+                                          const Pose &pose, double activation,
+                                          ContactWorkspace &ws)
 {
+  SegmentGrainContact out;
   check_activation(activation);
   check_segment(segment, "i");
   const Vec3 origin = 0.5 * (segment.p0 + segment.p1);
   const double half_length = 0.5 * (segment.p1 - segment.p0).norm();
   const double segment_size = half_length + segment.radius;
   const double reach = segment_size + shape.bounding_radius + activation;
-  if ((pose.position - origin).squaredNorm() > reach * reach) return std::nullopt;
+  if ((pose.position - origin).squaredNorm() > reach * reach) return out;
   check_shape(shape, "the grain");
 
   const Core a = place_segment(segment, origin, ws.vertices_i);
@@ -341,33 +341,42 @@ std::optional<SegmentContact> contact_segment_grain(const Segment &segment,
   const double merge = merge_distance_for(segment_size, shape.bounding_radius);
   const ManifoldInput in{activation, std::max(segment_size, shape.bounding_radius), merge};
   const Vec3 normal = build_manifold(a, b, in, ws);
-  const auto &pts = ws.candidates;
-  if (pts.empty()) return std::nullopt;
+  if (ws.candidates.empty()) return out;
 
-  // One point for a soft contact: the deepest; a segment lying flat on a face (equal
-  // depths within round-off) gets the middle of the touching stretch instead, so the
-  // force does not jump from one end to the other.
-  size_t deepest = 0;
-  for (size_t k = 1; k < pts.size(); ++k)
-    if (pts[k].gap < pts[deepest].gap) deepest = k;
-  ContactWorkspace::Candidate c = pts[deepest];
-  if (pts.size() == 2 && std::abs(pts[0].gap - pts[1].gap) <= Tolerance::kClip * in.length_scale) {
-    c.position = 0.5 * (pts[0].position + pts[1].position);
-    c.core_point_i = 0.5 * (pts[0].core_point_i + pts[1].core_point_i);
-    // The grain's feature is the face under the segment when one point names it.
-    const std::uint32_t fj0 = key_feature_j(pts[0].key), fj1 = key_feature_j(pts[1].key);
-    const std::uint32_t grain_feature = feature_type(fj1) == FeatureType::Face ? fj1 : fj0;
-    c.key = make_key(edge_feature(0, 1), grain_feature);
+  // Every point lies on the segment's axis: a clipped face patch or an edge overlap is a
+  // stretch of it, whose two ends carry the contact (a third point would lie between them).
+  auto to_segment_contact = [&](const ContactWorkspace::Candidate &c) {
+    SegmentContact p;
+    p.point = c.position + origin;
+    p.normal = normal;
+    p.gap = c.gap;
+    p.s_i = closest_parameter_on_segment(a.vertices[0], a.vertices[1], c.core_point_i);
+    p.key = c.key;
+    return p;
+  };
+  auto s_of = [&](size_t k) {
+    return closest_parameter_on_segment(a.vertices[0], a.vertices[1], ws.candidates[k].core_point_i);
+  };
+  size_t first = 0, last = 0;
+  for (size_t k = 1; k < ws.candidates.size(); ++k) {
+    if (s_of(k) < s_of(first)) first = k;
+    if (s_of(k) > s_of(last)) last = k;
   }
-  SegmentContact result;
-  result.point = c.position + origin;
-  result.normal = normal;
-  result.gap = c.gap;
-  result.s_i = closest_parameter_on_segment(a.vertices[0], a.vertices[1], c.core_point_i);
-  result.s_j = 0.0;
-  result.key = c.key;
-  return result;
+  out.points[out.count++] = to_segment_contact(ws.candidates[first]);
+  if (last != first) out.points[out.count++] = to_segment_contact(ws.candidates[last]);
+  return out;
 }
+
+namespace {
+SegmentPart segment_part(std::uint32_t feature)
+{
+  if (feature_type(feature) != FeatureType::Vertex) return SegmentPart::inside;
+  return feature_index(feature) == 0 ? SegmentPart::start : SegmentPart::end;
+}
+}    // namespace
+
+SegmentPart segment_part_i(const SegmentContact &c) { return segment_part(key_feature_i(c.key)); }
+SegmentPart segment_part_j(const SegmentContact &c) { return segment_part(key_feature_j(c.key)); }
 
 std::optional<SegmentContact> contact_segments(const Segment &segment_i,
                                                const Segment &segment_j, double activation)

@@ -57,7 +57,7 @@ struct ContactSet {
   const ContactPoint &operator[](int k) const { return points[k]; }
 };
 
-// Contact of a wire segment i with a body j (or another segment j): one point.
+// One point of the contact of a wire segment i with a body j (or another segment j).
 struct SegmentContact {
   Vec3 point;             // world, midway between the two dilated surfaces
   Vec3 normal;            // unit, from j to i
@@ -66,6 +66,26 @@ struct SegmentContact {
   double s_j = 0.0;       // same along segment j (0 when j is a grain)
   std::uint64_t key = 0;  // feature pair, as in ContactPoint
 };
+
+// Contact of a wire segment with a grain: the ends of the touching stretch, in the order
+// of s_i. Two points when the segment lies on a face or along an edge (each with its own
+// gap, so a tilting segment's force moves smoothly to its lower end), else one.
+struct SegmentGrainContact {
+  static constexpr int kMaxPoints = 2;
+  std::array<SegmentContact, kMaxPoints> points{};
+  int count = 0;
+
+  bool empty() const { return count == 0; }
+  const SegmentContact *begin() const { return points.data(); }
+  const SegmentContact *end() const { return points.data() + count; }
+  const SegmentContact &operator[](int k) const { return points[k]; }
+};
+
+// Where along a segment a contact point lies: at one of its end spheres (the sphere of a
+// wire node, which the elements meeting at the node share) or inside.
+enum class SegmentPart { start, end, inside };
+SegmentPart segment_part_i(const SegmentContact &c);
+SegmentPart segment_part_j(const SegmentContact &c);
 
 // A spherocylinder: segment p0-p1 dilated by radius (p0 == p1 is a sphere).
 struct Segment {
@@ -145,12 +165,11 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
 ContactPoint contact_sphere_plane(const Vec3 &centre, double radius, const PlaneWall &wall);
 ContactPoint contact_sphere_cylinder(const Vec3 &centre, double radius, const CylinderWall &wall);
 
-// Wire segment i against grain j: the single point of closest approach (for a segment
-// lying flat on a face, the middle of the touching stretch).
-std::optional<SegmentContact> contact_segment_grain(const Segment &segment,
-                                                    const Spheropolyhedron &shape,
-                                                    const Pose &pose, double activation,
-                                                    ContactWorkspace &workspace);
+// Wire segment i against grain j: the points with gap <= activation (see
+// SegmentGrainContact).
+SegmentGrainContact contact_segment_grain(const Segment &segment, const Spheropolyhedron &shape,
+                                          const Pose &pose, double activation,
+                                          ContactWorkspace &workspace);
 
 // Wire segment i against wire segment j (parallel overlapping segments: middle of the
 // overlap; zero-length segments are spheres).

@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 using namespace LAMMPS_NS;
@@ -51,6 +52,18 @@ vertices 8
 0.3 -0.3 0.3
 -0.3 0.3 0.3
 0.3 0.3 0.3
+end
+shape slab
+radius 0
+vertices 8
+-1.5 -0.5 -0.5
+1.5 -0.5 -0.5
+-1.5 0.5 -0.5
+1.5 0.5 -0.5
+-1.5 -0.5 0.5
+1.5 -0.5 0.5
+-1.5 0.5 0.5
+1.5 0.5 0.5
 end
 )";
 
@@ -705,6 +718,25 @@ TEST_F(CrossingWiresTest, GhostCutoffBelowTheContactReachIsANamedErrorAcrossRank
   }
 }
 
+// A wire's node pressed onto another wire (element A along x, held): the contact is at the
+// node's sphere, which both elements meeting at the node report. Shared between them it
+// sinks by f_n / k_n like a contact inside an element; counted by each it sank half as far.
+TEST_F(CrossingWiresTest, ContactAtANodeIsSharedByTheElementsMeetingThere)
+{
+  const std::vector<Point> atoms = {{-0.5, 0, 0, kMass}, {0.5, 0, 0, kMass}, {0, -0.5, 2 * kRadius, kMass},
+                                    {0, 0, 2 * kRadius, kMass}, {0, 0.5, 2 * kRadius, kMass}};
+  const std::string data = scratch("node_on_wire.data");
+  write_topology(data, atoms, {{1, 2}, {3, 4}, {4, 5}}, {});
+  load_scene(data, 100.0, 0.5, 0.0);    // B's elements at their rest length; only node 4 moves
+  commands({"group wire id 4", "fix press wire addforce 0 0 " + num(-kNormal),
+            "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " gamma_n 1 k_t 1e4 gamma_t 1 mu_s 0.5"});
+  run("run 300");
+  const double overlap = 2 * kRadius - position(4)[2];
+  std::printf("[ node on wire ] overlap %.6g (f_n/k_n %.4g), contacts %g\n", overlap, kNormal / kN, fix_value("w", 3));
+  EXPECT_NEAR(overlap / (kNormal / kN), 1.0, 1e-3);
+  EXPECT_EQ(fix_value("w", 3), 2.0);    // elements 3-4 and 4-5 each touch A at node 4
+}
+
 TEST_F(CrossingWiresTest, StaticCoefficientAloneAlsoActsWhileSliding)
 {
   crossing("mu_s " + num(kMuS));
@@ -898,11 +930,13 @@ class WireOnBoundaryTest : public WireTest {
   static constexpr int kNodes = 9;
   static constexpr double kMass = 0.01, kRadius = 0.05, kN = 1000.0, kMu = 0.5, kDamp = 0.02;
 
-  void wire_on_floor(bool floor = true, double y = 0.0, double z = kRadius)
+  void wire_on_floor(bool floor = true, double y = 0.0, double z = kRadius, bool slab = false)
   {
     std::vector<Point> atoms = straight_chain(kNodes, 0.25, kMass, -1.0, z);
     for (Point &p : atoms) p.y = y;
     atoms.push_back({3.0, 0.0, 0.5, 0.5, 2, 2});
+    // instead of the floor, a fixed grain whose top face is at z = 0 (atom kNodes + 2)
+    if (slab) atoms.push_back({0.0, 0.0, -0.5, 10.0, 1, 4});
     scene(atoms, kNodes, true, 100.0, 0.25, 0.01);
     commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0",
               "group wire id 1:" + std::to_string(kNodes), "group balls type 2"});
@@ -938,6 +972,30 @@ class WireOnBoundaryTest : public WireTest {
       if (lmp->atom->tag[i] <= kNodes) mine += lmp->atom->v[i][0] / kNodes;
     return summed(mine);
   }
+  // The wire resting flat is tilted to tan(theta) = 0.9 mu, where friction must hold it,
+  // then to 1.1 mu, where it must slide with dv/dt = A - k v, A = g (sin - mu cos) and the
+  // nodes' damping k = C / m. What it measured; `support_x` is the support's reaction along x.
+  struct Slope {
+    double moved_held, support_x, weight_along, gained, expected;
+  };
+  Slope tilt_to_slip(double mu, const std::function<double()> &support_x)
+  {
+    Slope out{};
+    run("run 1000");
+    const double held = std::atan(0.9 * mu), slides = std::atan(1.1 * mu);
+    tilt(held);
+    run("run 2000");
+    out.moved_held = mean_node(0);
+    out.support_x = support_x();
+    out.weight_along = kNodes * kMass * std::sin(held);
+    tilt(slides);
+    run("run 300");
+    const double v0 = mean_velocity_x(), T = 0.5, A = std::sin(slides) - mu * std::cos(slides), k = kDamp / kMass;
+    run("run 500");
+    out.gained = mean_velocity_x() - v0;
+    out.expected = (A / k - v0) * (1.0 - std::exp(-k * T));
+    return out;
+  }
 };
 
 // At rest each node sinks into the floor by its own weight over k_n, and the floor carries
@@ -965,24 +1023,50 @@ TEST_F(WireOnBoundaryTest, FloorFrictionHoldsTheWireBelowTheSlopeOfMuAndItSlides
 {
   wire_on_floor();
   wire_and_solver();
-  run("run 1000");
-  const double held = std::atan(0.9 * kMu), slides = std::atan(1.1 * kMu), weight = kNodes * kMass;
-  tilt(held);
-  run("run 2000");
-  const double x_held = mean_node(0);
-  const double floor_x = fix_value("floor", 0);
-  tilt(slides);
-  run("run 300");
-  // sliding: dv/dt = A - k v with A = g (sin - mu cos) and the nodes' damping k = C / m
-  const double v0 = mean_velocity_x(), T = 0.5, A = std::sin(slides) - kMu * std::cos(slides), k = kDamp / kMass;
-  run("run 500");
-  const double gained = mean_velocity_x() - v0, expected = (A / k - v0) * (1.0 - std::exp(-k * T));
+  const Slope s = tilt_to_slip(kMu, [&] { return fix_value("floor", 0); });
   std::printf("[ wire on slope ] held at 0.9 mu: moved %.3g, floor along x %.10g (weight along the "
               "slope %.10g); sliding at 1.1 mu: gains %.6g in velocity (closed form %.6g)\n",
-              x_held, floor_x, weight * std::sin(held), gained, expected);
-  EXPECT_LT(std::abs(x_held), 1e-4);    // tangential springs and their transient (2.7e-5)
-  EXPECT_NEAR(floor_x / (weight * std::sin(held)), 1.0, 1e-6);
-  EXPECT_NEAR(gained / expected, 1.0, 1e-2);
+              s.moved_held, s.support_x, s.weight_along, s.gained, s.expected);
+  EXPECT_LT(std::abs(s.moved_held), 1e-4);    // tangential springs and their transient (2.7e-5)
+  EXPECT_NEAR(s.support_x / s.weight_along, 1.0, 1e-6);
+  EXPECT_NEAR(s.gained / s.expected, 1.0, 1e-2);
+}
+
+// The same wire on the flat top face of a grain: each node sinks by m g / k_n exactly as on
+// the floor (the contacts at a node's sphere are shared by the elements meeting there), the
+// wire comes to rest and the grain carries its weight. With one contact point per element
+// (the middle of the touching stretch) the end nodes sank twice as deep and the wire kept
+// rocking at ~1e-3 of its weight.
+TEST_F(WireOnBoundaryTest, WireRestsOnAGrainFaceAsOnTheFloor)
+{
+  wire_on_floor(false, 0.0, kRadius, true);
+  wire_and_solver();
+  run("run 3000");
+  const double weight = kNodes * kMass, sunk = kRadius - kMass / kN;
+  std::printf("[ wire on a grain face ] force on grains z %.12g (weight %.12g), end node z %.10g, "
+              "middle node z %.10g (closed form %.10g), kinetic energy %.3g\n",
+              fix_value("w", 9), weight, position(1)[2], position(5)[2], sunk, kinetic_energy(1, kNodes));
+  EXPECT_NEAR(fix_value("w", 9) / -weight, 1.0, 1e-6);    // handed to the grain
+  EXPECT_NEAR(force_on(kNodes + 2)[2] / -weight, 1.0, 1e-6);
+  EXPECT_NEAR(fix_value("w", 7), 0.0, 1e-9);
+  for (int k = 1; k <= kNodes; k++) EXPECT_NEAR(position(k)[2], sunk, 1e-3 * kMass / kN) << "node " << k;
+  EXPECT_EQ(fix_value("w", 4), kNodes - 1);    // every element touches the face
+  EXPECT_LT(kinetic_energy(1, kNodes), 1e-14);
+}
+
+// Friction on a grain face (fix wire's mu_s = mu_d = 0.9 here): held below the slope of mu,
+// sliding above it as on the floor, the grain taking the weight along the slope.
+TEST_F(WireOnBoundaryTest, GrainFaceFrictionHoldsTheWireBelowTheSlopeOfMuAndItSlidesAbove)
+{
+  wire_on_floor(false, 0.0, kRadius, true);
+  wire_and_solver();
+  const Slope s = tilt_to_slip(0.9, [&] { return fix_value("w", 7); });
+  std::printf("[ wire on a grain slope ] held at 0.9 mu: moved %.3g, grain along x %.10g (weight "
+              "along the slope %.10g); sliding at 1.1 mu: gains %.6g in velocity (closed form %.6g)\n",
+              s.moved_held, s.support_x, s.weight_along, s.gained, s.expected);
+  EXPECT_LT(std::abs(s.moved_held), 1e-4);
+  EXPECT_NEAR(s.support_x / s.weight_along, 1.0, 1e-6);
+  EXPECT_NEAR(s.gained / s.expected, 1.0, 1e-2);
 }
 
 // A loading plate (fix nscd/plate, weight W) falls onto the wire lying on the floor and

@@ -189,19 +189,50 @@ TEST(ContactSegments, CrossedParallelAndZeroLength)
   EXPECT_THROW(contact_segments(Segment{Vec3(NAN, 0, 0), Vec3::Zero(), 0.1}, a, 0.0), ContactError);
 }
 
-TEST(ContactSegmentGrain, FlatOnAFaceGivesTheMiddleOfTheTouchingStretch)
+TEST(ContactSegmentGrain, FlatOnAFaceGivesBothEndsOfTheTouchingStretch)
 {
   const double r = 0.1, rw = 0.05, g = 0.01;
   const auto box = make_box(1, 1, 1, r);
   ContactWorkspace ws;
   // Segment from x = 0 to x = 3 along the top face; the face covers x in [0, 1] of it.
   const Segment wire{Vec3(0, 0.2, 1 + r + rw + g), Vec3(3, 0.2, 1 + r + rw + g), rw};
-  const auto c = contact_segment_grain(wire, box, place(box, Vec3::Zero()), 0.05, ws);
-  ASSERT_TRUE(c);
-  EXPECT_NEAR(c->gap, g, kTol);
-  EXPECT_NEAR((c->normal - Vec3::UnitZ()).norm(), 0.0, kTol);
-  EXPECT_NEAR(c->s_i, 1.0 / 6.0, 1e-12);
-  EXPECT_NEAR((c->point - Vec3(0.5, 0.2, 1 + r + 0.5 * g)).norm(), 0.0, 1e-12);
+  const SegmentGrainContact c = contact_segment_grain(wire, box, place(box, Vec3::Zero()), 0.05, ws);
+  ASSERT_EQ(c.count, 2);
+  for (const SegmentContact &p : c) {
+    EXPECT_NEAR(p.gap, g, kTol);
+    EXPECT_NEAR((p.normal - Vec3::UnitZ()).norm(), 0.0, kTol);
+  }
+  EXPECT_NEAR(c[0].s_i, 0.0, 1e-12);    // the segment's own end (the node's sphere)
+  EXPECT_EQ(segment_part_i(c[0]), SegmentPart::start);
+  EXPECT_NEAR((c[0].point - Vec3(0, 0.2, 1 + r + 0.5 * g)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(c[1].s_i, 1.0 / 3.0, 1e-12);    // where it leaves the face
+  EXPECT_EQ(segment_part_i(c[1]), SegmentPart::inside);
+  EXPECT_NEAR((c[1].point - Vec3(1, 0.2, 1 + r + 0.5 * g)).norm(), 0.0, 1e-12);
+}
+
+// A segment of length 1 resting with overlap d on the top face, lifted at its far end by
+// the angle a: each end keeps its own gap (closed form: its height above the face), so the
+// force of a soft contact moves smoothly onto the lower end as the segment tilts, through
+// the angle below which the face counts as flat (1 - cos a < 1e-8) and beyond.
+TEST(ContactSegmentGrain, TiltingSegmentKeepsEachEndsOwnGap)
+{
+  const double r = 0.1, rw = 0.05, d = 1e-3;
+  const auto box = make_box(1, 1, 1, r);
+  ContactWorkspace ws;
+  for (double a : {0.0, 1e-9, 1e-6, 1e-4, 5e-4, 9.9e-4, 1.01e-3, 1e-2, 0.3}) {
+    const Vec3 p0(-0.5, 0.1, 1 + r + rw - d);
+    const Vec3 p1 = p0 + Vec3(std::cos(a), 0, std::sin(a));
+    const SegmentGrainContact c = contact_segment_grain({p0, p1, rw}, box, place(box, Vec3::Zero()), 0.0, ws);
+    const double far_gap = std::sin(a) - d;
+    ASSERT_EQ(c.count, far_gap <= 0.0 ? 2 : 1) << "tilt " << a;
+    EXPECT_NEAR(c[0].gap, -d, kTol) << "tilt " << a;
+    EXPECT_EQ(segment_part_i(c[0]), SegmentPart::start);
+    EXPECT_NEAR(c[0].normal.z(), 1.0, kTol);
+    if (c.count == 2) {
+      EXPECT_NEAR(c[1].gap, far_gap, kTol) << "tilt " << a;
+      EXPECT_EQ(segment_part_i(c[1]), SegmentPart::end);
+    }
+  }
 }
 
 TEST(ContactSegmentGrain, TiltedSegmentTouchesWithItsLowEnd)
@@ -210,22 +241,45 @@ TEST(ContactSegmentGrain, TiltedSegmentTouchesWithItsLowEnd)
   const auto box = make_box(1, 1, 1, r);
   ContactWorkspace ws;
   const Segment wire{Vec3(0.5, 0, 1 + r + rw - 0.02), Vec3(0.5, 1, 2), rw};
-  const auto c = contact_segment_grain(wire, box, place(box, Vec3::Zero()), 0.0, ws);
-  ASSERT_TRUE(c);
-  EXPECT_NEAR(c->gap, -0.02, kTol);
-  EXPECT_NEAR(c->s_i, 0.0, kTol);
-  // Segment over the box edge (x = 1, z = 1) crossing it at a right angle, at 45 degrees.
+  const SegmentGrainContact c = contact_segment_grain(wire, box, place(box, Vec3::Zero()), 0.0, ws);
+  ASSERT_EQ(c.count, 1);
+  EXPECT_NEAR(c[0].gap, -0.02, kTol);
+  EXPECT_NEAR(c[0].s_i, 0.0, kTol);
+  // Segment over the box edge (x = 1, z = 1), along it, at 45 degrees.
   const Vec3 d = Vec3(1, 0, 1).normalized();
   const Vec3 mid = Vec3(1, 0, 1) + (r + rw + 0.03) * d;
   const Segment over_edge{mid - Vec3(0, 0.4, 0), mid + Vec3(0, 0.6, 0), rw};
-  const auto e = contact_segment_grain(over_edge, box, place(box, Vec3::Zero()), 0.1, ws);
-  ASSERT_TRUE(e);
-  EXPECT_NEAR(e->gap, 0.03, kTol);
-  EXPECT_NEAR((e->normal - d).norm(), 0.0, 1e-9);
-  // The whole segment is equally far from the edge: the middle of the touching stretch
-  // (the edge spans y in [-1, 1], the segment y in [-0.4, 0.6]).
-  EXPECT_NEAR(e->s_i, 0.5, 1e-9);
-  EXPECT_FALSE(contact_segment_grain(over_edge, box, place(box, Vec3::Zero()), 0.03, ws).has_value());
+  const SegmentGrainContact e = contact_segment_grain(over_edge, box, place(box, Vec3::Zero()), 0.1, ws);
+  // The whole segment is equally far from the edge (which spans y in [-1, 1]): both ends.
+  ASSERT_EQ(e.count, 2);
+  for (const SegmentContact &p : e) {
+    EXPECT_NEAR(p.gap, 0.03, kTol);
+    EXPECT_NEAR((p.normal - d).norm(), 0.0, 1e-9);
+  }
+  EXPECT_NEAR(e[0].s_i, 0.0, 1e-9);
+  EXPECT_NEAR(e[1].s_i, 1.0, 1e-9);
+  // Crossing the edge at a right angle: one point, inside the segment.
+  const Segment across{mid - Vec3(0.3, 0, -0.3), mid + Vec3(0.5, 0, -0.5), rw};
+  const SegmentGrainContact x = contact_segment_grain(across, box, place(box, Vec3::Zero()), 0.1, ws);
+  ASSERT_EQ(x.count, 1);
+  EXPECT_NEAR(x[0].gap, 0.03, kTol);
+  EXPECT_NEAR(x[0].s_i, 0.3 / 0.8, 1e-9);
+  EXPECT_EQ(segment_part_i(x[0]), SegmentPart::inside);
+  EXPECT_TRUE(contact_segment_grain(over_edge, box, place(box, Vec3::Zero()), 0.02, ws).empty());
+}
+
+TEST(ContactSegments, PartsNameTheEndSpheres)
+{
+  const Segment a{Vec3(0, 0, 0), Vec3(1, 0, 0), 0.1};
+  // b crosses a's middle, then touches a's far end with its own start
+  const auto inside = contact_segments(a, Segment{Vec3(0.5, -1, 0.15), Vec3(0.5, 1, 0.15), 0.1}, 0.0);
+  ASSERT_TRUE(inside);
+  EXPECT_EQ(segment_part_i(*inside), SegmentPart::inside);
+  EXPECT_EQ(segment_part_j(*inside), SegmentPart::inside);
+  const auto ends = contact_segments(a, Segment{Vec3(1.15, 0, 0), Vec3(2, 0.5, 0), 0.1}, 0.0);
+  ASSERT_TRUE(ends);
+  EXPECT_EQ(segment_part_i(*ends), SegmentPart::end);
+  EXPECT_EQ(segment_part_j(*ends), SegmentPart::start);
 }
 
 }    // namespace
