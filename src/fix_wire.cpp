@@ -32,7 +32,7 @@ using nscd::Vec3;
 namespace {
 enum Diagnostic {
   E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
-  GRAIN_FZ, DT_SP_STABLE, N_WIRE_BOUNDARY
+  GRAIN_FZ, DT_SP_STABLE, N_WIRE_BOUNDARY, STEPS_TOO_FAST
 };
 
 
@@ -294,6 +294,8 @@ void FixWire::setup(int /*vflag*/)
   diagnostics[SUBSTEPS] = plan.substeps;
   diagnostics[DT_SP] = plan.dt_sp;
   diagnostics[DT_SP_STABLE] = stable_dt_sp;
+  diagnostics[STEPS_TOO_FAST] = 0.0;
+  warned_fast_motion = false;
 }
 
 void FixWire::reset_dt()
@@ -407,11 +409,40 @@ void FixWire::post_force(int /*vflag*/)
           const std::vector<Vec3> &v, std::vector<Vec3> &f, nscd::wire::GrainForceAccumulator &) {
         substep_forces(info, x, v, f);
       });
+  check_motion_within_skin();
   store_nodes();
   hand_forces_to_grains();
   hand_forces_to_boundaries();
   keep_histories();
   sum_diagnostics_over_ranks();
+}
+
+/* Contacts are looked for once per step, among bodies closer than the neighbour skin. A
+   pair closing by more than the skin within one step is missed (a wire can pass through a
+   grain): count such steps (output 13) and warn once per run. Closing speed bound: the
+   largest node displacement of the step plus the larger of it and the largest grain
+   motion (at the velocities the subcycle moves the grains with). */
+void FixWire::check_motion_within_skin()
+{
+  if (law.k_n == 0.0) return;    // no contacts to miss
+  double largest[2] = {0.0, 0.0};    // node, grain
+  for (int k = 0; k < nodes.size(); k++)
+    largest[0] = std::max(largest[0], (nodes.state[k].position() - step_start[k]).norm());
+  for (int j = 0; j < atom->nlocal; j++)
+    if (avec->shape[j] != 0)
+      largest[1] = std::max(largest[1], (vec3(atom->v[j]).norm() + vec3(avec->omega[j]).norm() * avec->radius[j]) *
+                                            update->dt);
+  MPI_Allreduce(MPI_IN_PLACE, largest, 2, MPI_DOUBLE, MPI_MAX, world);
+  if (largest[0] + std::max(largest[0], largest[1]) <= neighbor->skin) return;
+  diagnostics[STEPS_TOO_FAST] += 1.0;
+  if (warned_fast_motion) return;
+  warned_fast_motion = true;
+  if (comm->me == 0)
+    error->warning(FLERR, "fix wire: at step {} a wire node moved {:.4g} and a grain {:.4g} in one step, "
+                   "closing by more than the neighbour skin {:.4g}: contacts can be missed (output 13 "
+                   "counts such steps). Use a smaller timestep or a larger skin ('neighbor {:.4g} bin')",
+                   update->ntimestep, largest[0], largest[1], neighbor->skin,
+                   2.0 * (largest[0] + std::max(largest[0], largest[1])));
 }
 
 /* Energies and contact counts of the last substep, summed over the ranks. */
@@ -438,13 +469,14 @@ void FixWire::load_nodes()
   nodes.state.resize(n);
   nodes.mass.resize(n);
   nodes.fixed.resize(n);
+  step_start.resize(n);
   nodes.dt = plan.dt_sp;
   for (int k = 0; k < n; k++) {
     const int i = node_atom[k];
     nscd::wire::Gear5State &s = nodes.state[k];
     if (gear[i][kGearColumns - 1] != 0.0) s.unpack(gear[i]);
     else s = nscd::wire::gear5_start(vec3(atom->x[i]), vec3(atom->v[i]), Vec3::Zero(), plan.dt_sp);
-    s.r[0] = vec3(atom->x[i]);
+    s.r[0] = step_start[k] = vec3(atom->x[i]);
     s.r[1] = vec3(atom->v[i]) * plan.dt_sp;
     nodes.mass[k] = avec->rmass[i];
     nodes.fixed[k] = (atom->mask[i] & groupbit) ? 0 : 1;

@@ -95,6 +95,7 @@ class FixWire : public Fix {
   // per step
   nscd::wire::WireNodeSet nodes;
   std::vector<int> node_atom;              // node k -> local atom index
+  std::vector<nscd::Vec3> step_start;      // per node: position at the start of the step
   std::vector<nscd::Vec3> external_force;  // per node: atom f minus the wire's own elastic force
   std::vector<double> fbuf;                // per local atom: 3 (node forces) or 6 (grain f, torque)
   std::vector<double> vbuf;                // per local atom: node velocity (3)
@@ -150,7 +151,8 @@ class FixWire : public Fix {
   bool histories_on_every_rank = false;    // just read from a restart file
 
   // diagnostics of the last substep; see compute_vector()
-  std::array<double, 12> diagnostics{};
+  std::array<double, 13> diagnostics{};
+  bool warned_fast_motion = false;    // this run
 
   void parse_option(int narg, char **arg, int &iarg);
   void check_partners();
@@ -158,6 +160,7 @@ class FixWire : public Fix {
   void plan_substeps();
   nscd::wire::WireStiffness stiffness() const;
   void check_ghost_cutoff();
+  void check_motion_within_skin();
   void rescale_states(double new_dt);
 
   void load_nodes();

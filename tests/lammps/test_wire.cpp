@@ -18,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <sstream>
 
 using namespace LAMMPS_NS;
@@ -716,6 +717,29 @@ TEST_F(CrossingWiresTest, GhostCutoffBelowTheContactReachIsANamedErrorAcrossRank
     EXPECT_NE(message.find("ghost cutoff 1.3 "), std::string::npos) << message;
     EXPECT_NE(message.find("comm_modify cutoff 2.4'"), std::string::npos) << message;
   }
+}
+
+// Contacts are looked for among bodies within the neighbour skin (0.3) of each other at the
+// start of a step. Element B falling at 600 (0.6 per step) from 0.4 above A passes through
+// it unseen; fix wire counts such steps (output 13) and warns once, naming a skin that
+// would see the contact. A slow run counts none.
+TEST_F(CrossingWiresTest, MotionBeyondTheSkinWithinAStepIsCountedAndWarned)
+{
+  crossing();
+  const std::string log = scratch("too_fast.log");
+  commands({"set atom 3*4 z 0.5", "velocity wire set 0 0 -600", "log " + log, "run 2", "log none"});
+  EXPECT_LT(b_position(2), -0.5);    // through A without a contact
+  EXPECT_EQ(fix_value("w", 12), 2.0);
+  if (rank() == 0) {
+    std::ifstream in(log);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("fix wire: at step 1 a wire node moved 0.59"), std::string::npos) << text;
+    EXPECT_NE(text.find("the neighbour skin 0.3: contacts can be missed"), std::string::npos) << text;
+    EXPECT_NE(text.find("larger skin ('neighbor 2.3"), std::string::npos) << text;    // 2 x (0.6 + 0.6)
+    EXPECT_EQ(text.find("at step 2"), std::string::npos) << "warned twice";
+  }
+  commands({"velocity wire set 0 0 0", "run 10"});
+  EXPECT_EQ(fix_value("w", 12), 0.0);
 }
 
 // A wire's node pressed onto another wire (element A along x, held): the contact is at the
