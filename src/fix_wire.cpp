@@ -19,6 +19,7 @@
 #include "nscd_gather.h"
 #include "neighbor.h"
 #include "update.h"
+#include "wire/contact_weights.h"
 
 #include <algorithm>
 #include <cmath>
@@ -322,23 +323,34 @@ void FixWire::gather_elements()
   elements = gather_records(mine, world, true);
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
-  std::map<tagint, int> count;
+  node_links.clear();
   for (const auto &e : elements) {
-    count[e[0]]++;
-    count[e[1]]++;
+    node_links.push_back({e[0], e[1]});
+    node_links.push_back({e[1], e[0]});
   }
-  elements_at_node.clear();
-  for (const auto &e : elements) elements_at_node.push_back({count[e[0]], count[e[1]]});
+  std::sort(node_links.begin(), node_links.end());
 }
 
-/* The sphere around a wire node belongs to every element meeting there: a contact found at
-   an element's end sphere is split evenly among them, so a node resting on a face pushes
-   as hard as a node on a wall whichever elements report it, and a contact point sliding
-   along the wire keeps its force as it passes a node. A point inside an element is its own. */
-double FixWire::share(int element, nscd::SegmentPart part) const
+/* Weight of a contact point on the sphere of node `node` (local index), found by the
+   element (node, other): nscd::wire::node_point_weight over the other elements at the
+   node that can touch the same body (for a wire-wire contact, elements joined to the
+   partner element, `partner` = its two tags, find none), each at its image next to node. */
+double FixWire::node_point_weight(int node, int other, const Vec3 &normal, const tagint *partner)
 {
-  if (part == nscd::SegmentPart::inside) return 1.0;
-  return 1.0 / elements_at_node[element][part == nscd::SegmentPart::start ? 0 : 1];
+  const tagint n = atom->tag[node], o = atom->tag[other];
+  other_directions.clear();
+  for (auto it = std::lower_bound(node_links.begin(), node_links.end(), std::array<tagint, 2>{n, 0});
+       it != node_links.end() && (*it)[0] == n; ++it) {
+    const tagint m = (*it)[1];
+    if (m == o || (partner && (joined(m, partner[0]) || joined(m, partner[1])))) continue;
+    const int j = atom->map(m);
+    if (j < 0)
+      error->one(FLERR, "fix wire: node ID {} next to node ID {} is not on this rank; increase the "
+                 "ghost cutoff with 'comm_modify cutoff'", m, n);
+    const int image = domain->closest_image(node, j);
+    other_directions.push_back((vec3(atom->x[image]) - vec3(atom->x[node])).normalized());
+  }
+  return nscd::wire::node_point_weight(normal, other_directions.data(), (int) other_directions.size());
 }
 
 FixWire::ContactKey FixWire::history_key(const Candidate &c, int slot)
@@ -669,8 +681,7 @@ void FixWire::find_wire_grain_candidates(std::vector<Candidate> &found)
       if (domain->closest_image(e.a, atom->map(tag[j])) != j) return;    // one image per grain
       const double reach = e.half + wire_radius + avec->radius[j] + margin;
       if ((vec3(x[j]) - e.centre).squaredNorm() > reach * reach) return;
-      found.push_back({Candidate::Kind::wire_grain, e.a, e.b, j, -1, e.element, -1,
-                       {tag[e.a], tag[e.b], tag[j], 0}, {}});
+      found.push_back({Candidate::Kind::wire_grain, e.a, e.b, j, -1, {tag[e.a], tag[e.b], tag[j], 0}, {}});
     });
   }
 }
@@ -699,8 +710,7 @@ void FixWire::find_wire_wire_candidates(std::vector<Candidate> &found)
       for (tagint s : ta)
         for (tagint t : tb)
           if (joined(s, t)) return;
-      found.push_back({Candidate::Kind::wire_wire, A.a, A.b, B.a, B.b, A.element, B.element,
-                       {ta[0], ta[1], tb[0], tb[1]}, {}});
+      found.push_back({Candidate::Kind::wire_wire, A.a, A.b, B.a, B.b, {ta[0], ta[1], tb[0], tb[1]}, {}});
     });
   }
 }
@@ -717,7 +727,7 @@ void FixWire::find_wire_boundary_candidates(std::vector<Candidate> &found)
     for (int i = 0; i < atom->nlocal; i++) {
       if (avec->shape[i] != 0 || !(atom->mask[i] & groupbit) || !(atom->mask[i] & b.groupbit)) continue;
       if (b.boundary->touch_sphere(vec3(x[i]), wire_radius, 0.0).gap > reach) continue;
-      found.push_back({Candidate::Kind::wire_boundary, i, -1, k, -1, -1, -1, {atom->tag[i], 0, b.key, 0}, {}});
+      found.push_back({Candidate::Kind::wire_boundary, i, -1, k, -1, {atom->tag[i], 0, b.key, 0}, {}});
     }
   }
 }
@@ -776,8 +786,10 @@ void FixWire::add_contact_forces(double tau, double dt)
   diagnostics[N_WIRE_BOUNDARY] = wire_boundary;
 }
 
-/* Element A = (a1, a2) against grain b1 at its pose after time tau: one soft contact per
-   point (the ends of the touching stretch), each with its own overlap and history. */
+/* Element A = (a1, a2) against grain b1 at its pose after time tau: a soft contact at each
+   point (the ends of the touching stretch), each with its own overlap and history slot,
+   weighted as nscd/wire/contact_weights.h says. The query reaches out by r_w, the ramp of
+   the stretch weights. */
 bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &energy)
 {
   double **x = atom->x;
@@ -787,25 +799,30 @@ bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &ener
   nscd::SegmentGrainContact contact;
   std::array<nscd::wire::LeverWeights, nscd::SegmentGrainContact::kMaxPoints> w{};
   try {
-    contact = nscd::contact_segment_grain(segment, avec->shape_of(c.b1), pose, 0.0, workspace);
+    contact = nscd::contact_segment_grain(segment, avec->shape_of(c.b1), pose, wire_radius, workspace);
     for (int k = 0; k < contact.count; k++) w[k] = nscd::wire::lever_weights(contact[k].s_i);
   } catch (std::exception &e) {
     error->one(FLERR, "fix wire: contact of the element of atoms {}-{} with grain ID {} failed: {}",
                atom->tag[c.a1], atom->tag[c.a2], atom->tag[c.b1], e.what());
   }
+  const double stretch_weight = contact.count < 2 ? 1.0 :
+      nscd::wire::stretch_end_weight((contact[1].s_i - contact[0].s_i) * (segment.p1 - segment.p0).norm(), wire_radius);
   std::array<bool, kSlots> closed{};
-  int inside = 0;
   for (int k = 0; k < contact.count; k++) {
     const nscd::SegmentContact &p = contact[k];
-    const nscd::SegmentPart part = nscd::segment_part_i(p);
-    const int slot = part == nscd::SegmentPart::start ? 0 : part == nscd::SegmentPart::end ? 1 : 2 + inside++;
     if (p.gap >= 0.0) continue;
+    // slots: the start sphere 0, the end sphere 1; inside, the far end of a stretch 3, else 2
+    const nscd::SegmentPart part = nscd::segment_part_i(p);
+    const int slot = part == nscd::SegmentPart::start ? 0 : part == nscd::SegmentPart::end ? 1 : (k == 1 ? 3 : 2);
+    double weight = stretch_weight;
+    if (part == nscd::SegmentPart::start) weight *= node_point_weight(c.a1, c.a2, p.normal, nullptr);
+    if (part == nscd::SegmentPart::end) weight *= node_point_weight(c.a2, c.a1, p.normal, nullptr);
+    if (weight == 0.0) continue;    // another element at the node carries this contact
     closed[slot] = true;
     const Vec3 v_wire = w[k].on_a * vec3(&vbuf[3 * (size_t) c.a1]) + w[k].on_b * vec3(&vbuf[3 * (size_t) c.a2]);
     const Vec3 v_rel = v_wire - m.point_velocity(p.point, tau);
     const nscd::wire::SoftContactForce r =
         nscd::wire::soft_contact_force(law, p.normal, -p.gap, v_rel, dt, c.history[slot]);
-    const double weight = share(c.element_a, part);
     const Vec3 force = weight * r.force;
     add_to(&fbuf[3 * (size_t) c.a1], w[k].on_a * force);
     add_to(&fbuf[3 * (size_t) c.a2], w[k].on_b * force);
@@ -828,7 +845,8 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
   const nscd::Segment A{vec3(x[c.a1]), vec3(x[c.a2]), wire_radius};
   const nscd::Segment B{vec3(x[c.b1]), vec3(x[c.b2]), wire_radius};
   const auto contact = nscd::contact_segments(A, B, 0.0);
-  if (!contact || contact->gap >= 0.0) {
+  const double weight = contact && contact->gap < 0.0 ? wire_wire_weight(c, *contact) : 0.0;
+  if (weight == 0.0) {
     c.history[0] = {};
     return false;
   }
@@ -839,8 +857,6 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
       (wb.on_a * node_v(c.b1) + wb.on_b * node_v(c.b2));
   const nscd::wire::SoftContactForce r =
       nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history[0]);
-  const double weight = share(c.element_a, nscd::segment_part_i(*contact)) *
-      share(c.element_b, nscd::segment_part_j(*contact));
   const Vec3 force = weight * r.force;
   add_to(&fbuf[3 * (size_t) c.a1], wa.on_a * force);
   add_to(&fbuf[3 * (size_t) c.a2], wa.on_b * force);
@@ -848,6 +864,26 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
   add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * force);
   energy += weight * r.elastic_energy;
   return true;
+}
+
+/* A wire-wire point on a node's sphere is shared with the other elements there (see
+   node_point_weight), on either side. */
+double FixWire::wire_wire_weight(const Candidate &c, const nscd::SegmentContact &p)
+{
+  const tagint *tag = atom->tag;
+  const tagint a[2] = {tag[c.a1], tag[c.a2]}, b[2] = {tag[c.b1], tag[c.b2]};
+  double weight = 1.0;
+  switch (nscd::segment_part_i(p)) {
+    case nscd::SegmentPart::start: weight *= node_point_weight(c.a1, c.a2, p.normal, b); break;
+    case nscd::SegmentPart::end: weight *= node_point_weight(c.a2, c.a1, p.normal, b); break;
+    case nscd::SegmentPart::inside: break;
+  }
+  switch (nscd::segment_part_j(p)) {
+    case nscd::SegmentPart::start: weight *= node_point_weight(c.b1, c.b2, -p.normal, a); break;
+    case nscd::SegmentPart::end: weight *= node_point_weight(c.b2, c.b1, -p.normal, a); break;
+    case nscd::SegmentPart::inside: break;
+  }
+  return weight;
 }
 
 /* Node c.a1 against boundary c.b1 where it stands after time tau. The boundary's share is

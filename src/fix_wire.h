@@ -107,7 +107,7 @@ class FixWire : public Fix {
   // Wire topology, the same on every rank: the elements as (lower tag, higher tag), sorted.
   // Gathered at setup from the bond lists of all ranks.
   std::vector<std::array<tagint, 2>> elements;
-  std::vector<std::array<int, 2>> elements_at_node;    // per element: at its two nodes
+  std::vector<std::array<tagint, 2>> node_links;    // (node, neighbour) both ways, sorted
   double longest_element = 0.0;    // rest or current, the longer, at setup
 
   // One copy of an element on this rank: nodes a (first node, or an image of it) and b
@@ -138,13 +138,14 @@ class FixWire : public Fix {
     enum class Kind : std::uint8_t { wire_wire, wire_grain, wire_boundary } kind;
     int a1, a2;    // element A's nodes (local indices), or (node, -1) on a boundary
     int b1, b2;    // element B's nodes, (grain, -1), or (index in boundaries, -1)
-    int element_a, element_b;    // indices in `elements`, or -1
     ContactKey key;    // of the pair; histories are kept under history_key()
     std::array<nscd::wire::TangentialHistory, kSlots> history;
   };
   static int slots_of(const Candidate &c) { return c.kind == Candidate::Kind::wire_grain ? kSlots : 1; }
   static ContactKey history_key(const Candidate &c, int slot);
-  double share(int element, nscd::SegmentPart part) const;
+  double node_point_weight(int node, int other, const nscd::Vec3 &normal, const tagint *partner);
+  double wire_wire_weight(const Candidate &c, const nscd::SegmentContact &p);
+  std::vector<nscd::Vec3> other_directions;    // scratch of node_point_weight
   std::vector<Candidate> candidates;
   std::map<ContactKey, nscd::wire::TangentialHistory> histories;    // between steps
   bigint histories_placed_at = -1;    // neighbor build after which histories were handed over
