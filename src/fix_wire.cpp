@@ -323,34 +323,6 @@ void FixWire::gather_elements()
   elements = gather_records(mine, world, true);
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
-  node_links.clear();
-  for (const auto &e : elements) {
-    node_links.push_back({e[0], e[1]});
-    node_links.push_back({e[1], e[0]});
-  }
-  std::sort(node_links.begin(), node_links.end());
-}
-
-/* Weight of a contact point on the sphere of node `node` (local index), found by the
-   element (node, other): nscd::wire::node_point_weight over the other elements at the
-   node that can touch the same body (for a wire-wire contact, elements joined to the
-   partner element, `partner` = its two tags, find none), each at its image next to node. */
-double FixWire::node_point_weight(int node, int other, const Vec3 &normal, const tagint *partner)
-{
-  const tagint n = atom->tag[node], o = atom->tag[other];
-  other_directions.clear();
-  for (auto it = std::lower_bound(node_links.begin(), node_links.end(), std::array<tagint, 2>{n, 0});
-       it != node_links.end() && (*it)[0] == n; ++it) {
-    const tagint m = (*it)[1];
-    if (m == o || (partner && (joined(m, partner[0]) || joined(m, partner[1])))) continue;
-    const int j = atom->map(m);
-    if (j < 0)
-      error->one(FLERR, "fix wire: node ID {} next to node ID {} is not on this rank; increase the "
-                 "ghost cutoff with 'comm_modify cutoff'", m, n);
-    const int image = domain->closest_image(node, j);
-    other_directions.push_back((vec3(atom->x[image]) - vec3(atom->x[node])).normalized());
-  }
-  return nscd::wire::node_point_weight(normal, other_directions.data(), (int) other_directions.size());
 }
 
 FixWire::ContactKey FixWire::history_key(const Candidate &c, int slot)
@@ -788,8 +760,8 @@ void FixWire::add_contact_forces(double tau, double dt)
 
 /* Element A = (a1, a2) against grain b1 at its pose after time tau: a soft contact at each
    point (the ends of the touching stretch), each with its own overlap and history slot,
-   weighted as nscd/wire/contact_weights.h says. The query reaches out by r_w, the ramp of
-   the stretch weights. */
+   the two ends of a stretch weighted by lib/wire/contact_weights.h. The query reaches out
+   by r_w, the ramp of those weights. */
 bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &energy)
 {
   double **x = atom->x;
@@ -814,20 +786,16 @@ bool FixWire::wire_grain_force(Candidate &c, double tau, double dt, double &ener
     // slots: the start sphere 0, the end sphere 1; inside, the far end of a stretch 3, else 2
     const nscd::SegmentPart part = nscd::segment_part_i(p);
     const int slot = part == nscd::SegmentPart::start ? 0 : part == nscd::SegmentPart::end ? 1 : (k == 1 ? 3 : 2);
-    double weight = stretch_weight;
-    if (part == nscd::SegmentPart::start) weight *= node_point_weight(c.a1, c.a2, p.normal, nullptr);
-    if (part == nscd::SegmentPart::end) weight *= node_point_weight(c.a2, c.a1, p.normal, nullptr);
-    if (weight == 0.0) continue;    // another element at the node carries this contact
     closed[slot] = true;
     const Vec3 v_wire = w[k].on_a * vec3(&vbuf[3 * (size_t) c.a1]) + w[k].on_b * vec3(&vbuf[3 * (size_t) c.a2]);
     const Vec3 v_rel = v_wire - m.point_velocity(p.point, tau);
     const nscd::wire::SoftContactForce r =
         nscd::wire::soft_contact_force(law, p.normal, -p.gap, v_rel, dt, c.history[slot]);
-    const Vec3 force = weight * r.force;
+    const Vec3 force = stretch_weight * r.force;
     add_to(&fbuf[3 * (size_t) c.a1], w[k].on_a * force);
     add_to(&fbuf[3 * (size_t) c.a2], w[k].on_b * force);
     grain_forces.add(c.b1, -force, p.point - pose.position);
-    energy += weight * r.elastic_energy;
+    energy += stretch_weight * r.elastic_energy;
   }
   bool any = false;
   for (int slot = 0; slot < kSlots; slot++) {
@@ -845,8 +813,7 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
   const nscd::Segment A{vec3(x[c.a1]), vec3(x[c.a2]), wire_radius};
   const nscd::Segment B{vec3(x[c.b1]), vec3(x[c.b2]), wire_radius};
   const auto contact = nscd::contact_segments(A, B, 0.0);
-  const double weight = contact && contact->gap < 0.0 ? wire_wire_weight(c, *contact) : 0.0;
-  if (weight == 0.0) {
+  if (!contact || contact->gap >= 0.0) {
     c.history[0] = {};
     return false;
   }
@@ -857,33 +824,12 @@ bool FixWire::wire_wire_force(Candidate &c, double dt, double &energy)
       (wb.on_a * node_v(c.b1) + wb.on_b * node_v(c.b2));
   const nscd::wire::SoftContactForce r =
       nscd::wire::soft_contact_force(law, contact->normal, -contact->gap, v_rel, dt, c.history[0]);
-  const Vec3 force = weight * r.force;
-  add_to(&fbuf[3 * (size_t) c.a1], wa.on_a * force);
-  add_to(&fbuf[3 * (size_t) c.a2], wa.on_b * force);
-  add_to(&fbuf[3 * (size_t) c.b1], -wb.on_a * force);
-  add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * force);
-  energy += weight * r.elastic_energy;
+  add_to(&fbuf[3 * (size_t) c.a1], wa.on_a * r.force);
+  add_to(&fbuf[3 * (size_t) c.a2], wa.on_b * r.force);
+  add_to(&fbuf[3 * (size_t) c.b1], -wb.on_a * r.force);
+  add_to(&fbuf[3 * (size_t) c.b2], -wb.on_b * r.force);
+  energy += r.elastic_energy;
   return true;
-}
-
-/* A wire-wire point on a node's sphere is shared with the other elements there (see
-   node_point_weight), on either side. */
-double FixWire::wire_wire_weight(const Candidate &c, const nscd::SegmentContact &p)
-{
-  const tagint *tag = atom->tag;
-  const tagint a[2] = {tag[c.a1], tag[c.a2]}, b[2] = {tag[c.b1], tag[c.b2]};
-  double weight = 1.0;
-  switch (nscd::segment_part_i(p)) {
-    case nscd::SegmentPart::start: weight *= node_point_weight(c.a1, c.a2, p.normal, b); break;
-    case nscd::SegmentPart::end: weight *= node_point_weight(c.a2, c.a1, p.normal, b); break;
-    case nscd::SegmentPart::inside: break;
-  }
-  switch (nscd::segment_part_j(p)) {
-    case nscd::SegmentPart::start: weight *= node_point_weight(c.b1, c.b2, -p.normal, a); break;
-    case nscd::SegmentPart::end: weight *= node_point_weight(c.b2, c.b1, -p.normal, a); break;
-    case nscd::SegmentPart::inside: break;
-  }
-  return weight;
 }
 
 /* Node c.a1 against boundary c.b1 where it stands after time tau. The boundary's share is

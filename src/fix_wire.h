@@ -107,7 +107,6 @@ class FixWire : public Fix {
   // Wire topology, the same on every rank: the elements as (lower tag, higher tag), sorted.
   // Gathered at setup from the bond lists of all ranks.
   std::vector<std::array<tagint, 2>> elements;
-  std::vector<std::array<tagint, 2>> node_links;    // (node, neighbour) both ways, sorted
   double longest_element = 0.0;    // rest or current, the longer, at setup
 
   // One copy of an element on this rank: nodes a (first node, or an image of it) and b
@@ -143,9 +142,6 @@ class FixWire : public Fix {
   };
   static int slots_of(const Candidate &c) { return c.kind == Candidate::Kind::wire_grain ? kSlots : 1; }
   static ContactKey history_key(const Candidate &c, int slot);
-  double node_point_weight(int node, int other, const nscd::Vec3 &normal, const tagint *partner);
-  double wire_wire_weight(const Candidate &c, const nscd::SegmentContact &p);
-  std::vector<nscd::Vec3> other_directions;    // scratch of node_point_weight
   std::vector<Candidate> candidates;
   std::map<ContactKey, nscd::wire::TangentialHistory> histories;    // between steps
   bigint histories_placed_at = -1;    // neighbor build after which histories were handed over

@@ -82,7 +82,7 @@ struct SegmentGrainContact {
 };
 
 // Where along a segment a contact point lies: at one of its end spheres (the sphere of a
-// wire node, which the elements meeting at the node share) or inside.
+// wire node, part of every element meeting at the node) or inside.
 enum class SegmentPart { start, end, inside };
 SegmentPart segment_part_i(const SegmentContact &c);
 SegmentPart segment_part_j(const SegmentContact &c);
