@@ -212,8 +212,8 @@ TEST(ContactSegmentGrain, FlatOnAFaceGivesBothEndsOfTheTouchingStretch)
 
 // A segment of length 1 resting with overlap d on the top face, lifted at its far end by
 // the angle a: each end keeps its own gap (closed form: its height above the face), so the
-// force of a soft contact moves smoothly onto the lower end as the segment tilts, through
-// the angle below which the face counts as flat (1 - cos a < 1e-8) and beyond.
+// force of a soft contact moves smoothly onto the lower end as the segment tilts, from flat
+// to 0.3 rad (the separating axis stays the face normal while the low end is over the face).
 TEST(ContactSegmentGrain, TiltingSegmentKeepsEachEndsOwnGap)
 {
   const double r = 0.1, rw = 0.05, d = 1e-3;
