@@ -345,25 +345,32 @@ SegmentGrainContact contact_segment_grain(const Segment &segment, const Spheropo
 
   // Every point lies on the segment's axis: a clipped face patch or an edge overlap is a
   // stretch of it, whose two ends carry the contact (a third point would lie between them).
-  auto to_segment_contact = [&](const ContactWorkspace::Candidate &c) {
-    SegmentContact p;
-    p.point = c.position + origin;
-    p.normal = normal;
-    p.gap = c.gap;
-    p.s_i = closest_parameter_on_segment(a.vertices[0], a.vertices[1], c.core_point_i);
-    p.key = c.key;
-    return p;
-  };
   auto s_of = [&](size_t k) {
     return closest_parameter_on_segment(a.vertices[0], a.vertices[1], ws.candidates[k].core_point_i);
   };
+  auto add_point = [&](size_t k, double s) {
+    SegmentContact &p = out.points[out.count++];
+    p.point = ws.candidates[k].position + origin;
+    p.normal = normal;
+    p.gap = ws.candidates[k].gap;
+    p.s_i = s;
+    p.key = ws.candidates[k].key;
+  };
   size_t first = 0, last = 0;
+  double s_first = s_of(0), s_last = s_first;
   for (size_t k = 1; k < ws.candidates.size(); ++k) {
-    if (s_of(k) < s_of(first)) first = k;
-    if (s_of(k) > s_of(last)) last = k;
+    const double s = s_of(k);
+    if (s < s_first) {
+      first = k;
+      s_first = s;
+    }
+    if (s > s_last) {
+      last = k;
+      s_last = s;
+    }
   }
-  out.points[out.count++] = to_segment_contact(ws.candidates[first]);
-  if (last != first) out.points[out.count++] = to_segment_contact(ws.candidates[last]);
+  add_point(first, s_first);
+  if (last != first) add_point(last, s_last);
   return out;
 }
 
