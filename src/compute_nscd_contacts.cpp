@@ -37,9 +37,9 @@ ComputeNSCDContacts::~ComputeNSCDContacts()
 
 void ComputeNSCDContacts::init()
 {
-  const int ifix = modify->find_fix_by_style("^nscd$");
-  if (ifix < 0) error->all(FLERR, "compute nscd/contacts needs fix nscd (it reports its contacts)");
-  fix = dynamic_cast<FixNSCD *>(modify->fix[ifix]);
+  const auto fixes = modify->get_fix_by_style("^nscd$");
+  if (fixes.empty()) error->all(FLERR, "compute nscd/contacts needs fix nscd (it reports its contacts)");
+  fix = dynamic_cast<FixNSCD *>(fixes.front());
 }
 
 void ComputeNSCDContacts::grow(int n)

@@ -9,7 +9,7 @@
 #include "error.h"
 #include "update.h"
 
-#include "shape/spheropolyhedron.h"
+#include "shape/shape_library.h"
 
 #include <cmath>
 #include <cstring>

@@ -108,10 +108,10 @@ void FixNSCD::init()
                "'pair_style nscd' and 'pair_coeff * * FRICTION'");
   if (!pair->compute_flag)
     error->all(FLERR, "fix nscd: pair_modify compute no switches off contact detection; remove it");
-  for (int f = 0; f < modify->nfix; f++)
-    if (modify->fix[f] != this && dynamic_cast<FixNSCD *>(modify->fix[f]))
+  for (Fix *other : modify->get_fix_list())
+    if (other != this && dynamic_cast<FixNSCD *>(other))
       error->all(FLERR, "fix nscd: only one fix nscd may be defined ({} and {}); one solver "
-                 "handles all grains and boundaries", modify->fix[f]->id, id);
+                 "handles all grains and boundaries", other->id, id);
   if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
@@ -160,8 +160,8 @@ void FixNSCD::check_grains_are_consistent()
 void FixNSCD::find_partners()
 {
   boundaries.clear();
-  for (int f = 0; f < modify->nfix; f++)
-    if (auto *b = dynamic_cast<NSCDBoundary *>(modify->fix[f])) boundaries.push_back(b);
+  for (Fix *other : modify->get_fix_list())
+    if (auto *b = dynamic_cast<NSCDBoundary *>(other)) boundaries.push_back(b);
 }
 
 /* A run can start without init() (run ... pre no): partners may have changed. The contact
@@ -195,7 +195,7 @@ void FixNSCD::final_integrate()
   dt = update->dt;
   if (neighbor->ago == 0) check_no_points_in_group();
   exchange_mode = Exchange::state;
-  comm->forward_comm_fix(this, 12);
+  comm->forward_comm(this, 12);
   build_bodies();
   gather_contacts();
   count_shares();
@@ -334,8 +334,8 @@ void FixNSCD::count_shares()
     if (c.body_j >= 0) problem.bodies[c.body_j].share = 1.0;
   }
   exchange_mode = Exchange::share;
-  comm->reverse_comm_fix(this, 1);
-  comm->forward_comm_fix(this, 1);
+  comm->reverse_comm(this, 1);
+  comm->forward_comm(this, 1);
   for (int b : global_bodies) {
     double mine = problem.bodies[b].share;
     MPI_Allreduce(&mine, &problem.bodies[b].share, 1, MPI_DOUBLE, MPI_SUM, world);
@@ -377,7 +377,7 @@ void FixNSCD::solve()
 void FixNSCD::exchange_velocities()
 {
   exchange_mode = Exchange::correction;
-  comm->reverse_comm_fix(this, 6);
+  comm->reverse_comm(this, 6);
   // The owners now hold the sum of their copies' corrections; with mass splitting their
   // velocity changes by the mean.
   for (int b = 0; b < atom->nlocal; b++) {
@@ -388,7 +388,7 @@ void FixNSCD::exchange_velocities()
     body.angular_velocity -= excess * problem.angular_velocity_correction(b);
   }
   exchange_mode = Exchange::velocity;
-  comm->forward_comm_fix(this, 6);
+  comm->forward_comm(this, 6);
   // A body every rank holds takes the corrections of all ranks' contacts.
   for (int b : global_bodies) {
     nscd::SolverBody &body = problem.bodies[b];
@@ -463,7 +463,7 @@ void FixNSCD::hand_back_forces()
       tally_virial(contact.body_i, contact.body_j, contact.point, contact.impulse / dt);
     if (vflag_atom) {    // ghosts' shares go to their owners
       exchange_mode = Exchange::virial;
-      comm->reverse_comm_fix(this, 6);
+      comm->reverse_comm(this, 6);
     }
   }
   size_t first = pair_count;

@@ -66,7 +66,7 @@ int FixNSCDPlate::setmask()
 void FixNSCDPlate::init()
 {
   avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/plate");
-  if (modify->find_fix_by_style("^nscd$") < 0)
+  if (modify->get_fix_by_style("^nscd$").empty())
     error->all(FLERR, "fix nscd/plate {} needs fix nscd (which solves its contacts)", id);
 }
 

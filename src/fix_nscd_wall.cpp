@@ -108,7 +108,7 @@ int FixNSCDWall::modify_param(int narg, char **arg)
 void FixNSCDWall::init()
 {
   avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/wall");
-  if (modify->find_fix_by_style("^nscd$") < 0)
+  if (modify->get_fix_by_style("^nscd$").empty())
     error->all(FLERR, "fix nscd/wall {} has no effect without fix nscd (which solves its "
                "contacts); define fix nscd as well", id);
 }

@@ -159,10 +159,10 @@ int FixWire::setmask()
 
 void FixWire::init()
 {
-  for (int f = 0; f < modify->nfix; f++)
-    if (modify->fix[f] != this && dynamic_cast<FixWire *>(modify->fix[f]))
+  for (Fix *other : modify->get_fix_list())
+    if (other != this && dynamic_cast<FixWire *>(other))
       error->all(FLERR, "fix wire: only one fix wire may be defined ({} and {}); one fix handles "
-                 "all wire nodes and their contacts", modify->fix[f]->id, id);
+                 "all wire nodes and their contacts", other->id, id);
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");
@@ -220,8 +220,7 @@ bool FixWire::acts_on_nodes(const Fix *other) const
 void FixWire::find_boundaries()
 {
   boundaries.clear();
-  for (int f = 0; f < modify->nfix; f++) {
-    Fix *other = modify->fix[f];
+  for (Fix *other : modify->get_fix_list()) {
     auto *b = dynamic_cast<NSCDBoundary *>(other);
     if (!b) continue;
     nscd::wire::SoftContactLaw with_friction = law;
@@ -527,13 +526,13 @@ void FixWire::substep_forces(const nscd::wire::SubstepInfo &info, const std::vec
 void FixWire::share_node_state()
 {
   comm_mode = Comm::node_state;
-  comm->forward_comm_fix(this, 6);
+  comm->forward_comm(this, 6);
 }
 
 void FixWire::sum_ghost_forces(int columns)
 {
   comm_mode = columns == 3 ? Comm::node_force : Comm::grain_force;
-  comm->reverse_comm_fix(this, columns);
+  comm->reverse_comm(this, columns);
 }
 
 /* Bond and angle forces of every element and joint, by the kernels of bond_style wire and
@@ -710,7 +709,7 @@ void FixWire::find_wire_boundary_candidates(std::vector<Candidate> &found)
 void FixWire::share_grain_velocities()
 {
   comm_mode = Comm::grain_velocity;
-  comm->forward_comm_fix(this, 6);
+  comm->forward_comm(this, 6);
 }
 
 /* After atoms have moved between ranks, each contact history goes to the rank that now

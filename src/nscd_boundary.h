@@ -16,7 +16,6 @@ namespace LAMMPS_NS {
 
 class NSCDBoundary {
  public:
-  virtual ~NSCDBoundary() = default;
 
   // Appends the contacts of the boundary with OWNED grains (so each contact is on exactly
   // one rank). body_i is the local atom index, body_j = nscd::kEnvironment.
@@ -57,6 +56,12 @@ class NSCDBoundary {
   {
     return step == wire_force_step ? wire_force : nscd::Vec3::Zero();
   }
+
+ protected:
+  // Never deleted through this interface (LAMMPS deletes the Fix). Not virtual, so that the
+  // fix's destructor keeps the exception specification of LAMMPS' Fix, which differs
+  // between LAMMPS versions.
+  ~NSCDBoundary() = default;
 
  private:
   nscd::Vec3 wire_force = nscd::Vec3::Zero();

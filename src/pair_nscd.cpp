@@ -9,10 +9,11 @@
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
 
 #include "nscd_contact.h"
+
+#include "shape/shape_library.h"
 
 #include <cmath>
 #include <cstring>
@@ -124,7 +125,7 @@ void PairNSCD::init_style()
       smallest = std::min(smallest, avec->shapes().shape(id).bounding_radius);
     activation = activation_fraction * smallest;
   }
-  neighbor->request(this, instance_me);
+  neighbor->add_request(this);
   // Contacts are found from the neighbour list every step: a stale list misses them.
   if ((neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check) && comm->me == 0)
     error->warning(FLERR, "pair_style nscd: the neighbour list may be rebuilt too late "

@@ -175,12 +175,12 @@ class WireTest : public LammpsTest {
   }
   double fix_value(const std::string &id, int index)
   {
-    return lmp->modify->fix[lmp->modify->find_fix(id.c_str())]->compute_vector(index);
+    return lmp->modify->get_fix_by_id(id.c_str())->compute_vector(index);
   }
   // Rows of the local compute `id` (computed now) of all ranks, sorted.
   std::vector<std::vector<double>> local_rows(const std::string &id)
   {
-    Compute *c = lmp->modify->compute[lmp->modify->find_compute(id.c_str())];
+    Compute *c = lmp->modify->get_compute_by_id(id.c_str());
     c->compute_local();
     const int cols = c->size_local_cols;
     std::vector<double> mine;
