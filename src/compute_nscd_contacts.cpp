@@ -9,6 +9,8 @@
 #include "modify.h"
 #include "update.h"
 
+#include "solver/contact_problem.h"
+
 #include <cstdint>
 #include <cstring>
 

@@ -15,11 +15,13 @@
 #include "modify.h"
 #include "nscd_arrays.h"
 #include "nscd_boundary.h"
+#include "nscd_boundary_fix.h"
 #include "nscd_contact.h"
 #include "nscd_gather.h"
 #include "neighbor.h"
 #include "update.h"
 #include "wire/contact_weights.h"
+#include "wire/elastic_forces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -221,8 +223,9 @@ void FixWire::find_boundaries()
 {
   boundaries.clear();
   for (Fix *other : modify->get_fix_list()) {
-    auto *b = dynamic_cast<NSCDBoundary *>(other);
-    if (!b) continue;
+    auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(other);
+    if (!boundary_fix) continue;
+    NSCDBoundary *b = &boundary_fix->boundary();
     nscd::wire::SoftContactLaw with_friction = law;
     with_friction.mu_s = with_friction.mu_d = b->friction_coefficient();
     boundaries.push_back({b, other->groupbit, (tagint) (boundary_tag(other->id) >> 34), with_friction});
@@ -544,7 +547,7 @@ double FixWire::add_elastic_forces(double *energy_axial, double *energy_bending)
   if (bond)
     for (int n = 0; n < neighbor->nbondlist; n++) {
       const int *b = neighbor->bondlist[n];
-      const nscd::wire::AxialForces e = bond->element(b[2], vec3(x[b[0]]), vec3(x[b[1]]));
+      const nscd::wire::AxialForces e = bond->element(b[2], x[b[0]], x[b[1]]);
       add_to(&fbuf[3 * (size_t) b[0]], e.on_a);
       add_to(&fbuf[3 * (size_t) b[1]], e.on_b);
       *energy_axial += e.energy;
@@ -552,7 +555,7 @@ double FixWire::add_elastic_forces(double *energy_axial, double *energy_bending)
   if (angle)
     for (int n = 0; n < neighbor->nanglelist; n++) {
       const int *a = neighbor->anglelist[n];
-      const nscd::wire::BendingForces e = angle->joint(a[3], vec3(x[a[0]]), vec3(x[a[1]]), vec3(x[a[2]]));
+      const nscd::wire::BendingForces e = angle->joint(a[3], x[a[0]], x[a[1]], x[a[2]]);
       add_to(&fbuf[3 * (size_t) a[0]], e.on_a);
       add_to(&fbuf[3 * (size_t) a[1]], e.on_b);
       add_to(&fbuf[3 * (size_t) a[2]], e.on_c);

@@ -1,6 +1,6 @@
-/* What fix nscd needs from a fix that puts boundaries (walls, the loading plate) into the
-   contact problem. Such a fix derives from Fix and from this interface; fix nscd finds it
-   among the defined fixes. */
+/* What fix nscd and fix wire need from a boundary (a wall, the loading plate) of the contact
+   problem. A fix that puts one there derives from NSCDBoundaryFix (nscd_boundary_fix.h) and
+   hands out an object with this interface, which it owns. */
 
 #ifndef LMP_NSCD_BOUNDARY_H
 #define LMP_NSCD_BOUNDARY_H
@@ -58,10 +58,7 @@ class NSCDBoundary {
   }
 
  protected:
-  // Never deleted through this interface (LAMMPS deletes the Fix). Not virtual, so that the
-  // fix's destructor keeps the exception specification of LAMMPS' Fix, which differs
-  // between LAMMPS versions.
-  ~NSCDBoundary() = default;
+  ~NSCDBoundary() = default;    // its fix owns it, never deleted through this interface
 
  private:
   nscd::Vec3 wire_force = nscd::Vec3::Zero();

@@ -13,7 +13,9 @@
 
 #include "nscd_contact.h"
 
+#include "geometry/contact.h"
 #include "shape/shape_library.h"
+#include "solver/contact_problem.h"
 
 #include <cmath>
 #include <cstring>
@@ -21,7 +23,12 @@
 
 using namespace LAMMPS_NS;
 
-PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp)
+struct PairNSCD::Found {
+  std::vector<nscd::Contact> contacts;
+  nscd::ContactWorkspace workspace;
+};
+
+PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp), found(std::make_unique<Found>())
 {
   single_enable = 0;
   restartinfo = 1;
@@ -37,6 +44,11 @@ PairNSCD::~PairNSCD()
     memory->destroy(mu);
     memory->destroy(restitution_coeff);
   }
+}
+
+const std::vector<nscd::Contact> &PairNSCD::contacts() const
+{
+  return found->contacts;
 }
 
 void PairNSCD::allocate()
@@ -150,7 +162,7 @@ double PairNSCD::init_one(int i, int j)
 void PairNSCD::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  found.clear();
+  found->contacts.clear();
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ii++) {
     const int i = list->ilist[ii];
@@ -179,14 +191,14 @@ void PairNSCD::add_grain_contacts(int i, int j)
   if (dx * dx + dy * dy + dz * dz >= reach * reach) return;
   nscd::ContactSet set;
   try {
-    set = nscd::contact_grains(shape_i, avec->pose(i), shape_j, avec->pose(j), activation, workspace);
+    set = nscd::contact_grains(shape_i, avec->pose(i), shape_j, avec->pose(j), activation, found->workspace);
   } catch (std::exception &e) {
     error->one(FLERR, "pair_style nscd: contact of atoms {} and {} failed: {}", atom->tag[i],
                atom->tag[j], e.what());
   }
   const ContactLaw law{mu[atom->type[i]][atom->type[j]], restitution_coeff[atom->type[i]][atom->type[j]]};
   for (const nscd::ContactPoint &p : set)
-    found.push_back(make_contact(p, i, j, atom->tag[i], atom->tag[j], law));
+    found->contacts.push_back(make_contact(p, i, j, atom->tag[i], atom->tag[j], law));
 }
 
 /* For `neighbor multi`: grains of bounding radii ri and rj interact within ri + rj plus the

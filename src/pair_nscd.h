@@ -14,10 +14,12 @@ PairStyle(nscd,PairNSCD);
 
 #include "pair.h"
 
-#include "geometry/contact.h"
-#include "solver/contact_problem.h"
-
+#include <memory>
 #include <vector>
+
+namespace nscd {
+struct Contact;
+}
 
 namespace LAMMPS_NS {
 
@@ -40,7 +42,7 @@ class PairNSCD : public Pair {
 
   // Grain-grain contacts found by the last compute(): body indices are local atom
   // indices (owned or ghost), keys are (tag, tag, feature) canonical for warm starting.
-  const std::vector<nscd::Contact> &contacts() const { return found; }
+  const std::vector<nscd::Contact> &contacts() const;
   double activation_distance() const { return activation; }
   double friction(int itype, int jtype) const { return mu[itype][jtype]; }
   double restitution(int itype, int jtype) const { return restitution_coeff[itype][jtype]; }
@@ -51,8 +53,10 @@ class PairNSCD : public Pair {
   double activation = 0.0;           // in use, set by init_style()
   double **mu = nullptr, **restitution_coeff = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
-  std::vector<nscd::Contact> found;
-  nscd::ContactWorkspace workspace;
+  // The contacts of the last compute() and the geometry's scratch space, behind a pointer:
+  // style_pair.h pulls this header into LAMMPS' core, which need not compile lib/ and Eigen.
+  struct Found;
+  std::unique_ptr<Found> found;
 
   void allocate();
   void add_grain_contacts(int i, int j);

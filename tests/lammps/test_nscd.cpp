@@ -9,6 +9,8 @@
 #include "output.h"
 #include "thermo.h"
 
+#include "solver/contact_problem.h"
+
 #include <cmath>
 #include <fstream>
 #include <map>
