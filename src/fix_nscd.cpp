@@ -14,6 +14,7 @@
 #include "modify.h"
 #include "nscd_arrays.h"
 #include "nscd_gather.h"
+#include "nscd_restart.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
 #include "nscd_boundary_fix.h"
@@ -37,7 +38,9 @@ enum Diagnostic {
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
 
-// Restart files hold ImpulseRecords as raw bytes: their layout is the file format.
+// Restart files hold ImpulseRecords as raw bytes: their layout is the file format (version 1:
+// the record count, then the records).
+constexpr int kRestartVersion = 1;
 static_assert(sizeof(nscd::ImpulseRecord) == 48, "restart record layout changed");
 }    // namespace
 
@@ -135,6 +138,10 @@ void FixNSCD::init()
   if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
+  if (update->whichflag == 2)
+    error->all(FLERR, "fix nscd does not work with minimize: rigid grains in contact have no "
+               "potential energy to minimise; let them settle with 'run' (unfix {} first to "
+               "minimise other parts of the system)", id);
   dt = update->dt;
   find_partners();
   check_no_points_in_group();
@@ -678,18 +685,24 @@ void FixNSCD::write_restart(FILE *fp)
     for (const nscd::Contact &c : solver->problem.contacts) mine.push_back(nscd::record_of(c));
   }
   const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
-  if (comm->me == 0) {    // size of the block, then the record count, then the records
+  if (comm->me == 0) {
     const int count = (int) all.size();
-    const int size = (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord));
-    fwrite(&size, sizeof(int), 1, fp);
+    nscd_restart::write_header(fp, kRestartVersion, (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord)));
     fwrite(&count, sizeof(int), 1, fp);
     fwrite(all.data(), sizeof(nscd::ImpulseRecord), all.size(), fp);
   }
 }
 
-void FixNSCD::restart(char *buf)
+void FixNSCD::restart(char *block)
 {
   // read_restart hands every rank the block written above, after its size.
+  const char *buf = block;
+  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
+  if (version > kRestartVersion)
+    error->all(FLERR, "fix nscd {}: the restart file holds its contacts in format {}, this build "
+               "reads formats up to {}; use a newer build, or start without the stored warm "
+               "start ('unfix {}' before the run, then define it again)", id, version,
+               kRestartVersion, id);
   int count;
   std::memcpy(&count, buf, sizeof(int));
   solver->restored_contacts.resize(count);

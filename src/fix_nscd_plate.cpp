@@ -10,6 +10,7 @@
 #include "modify.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
+#include "nscd_restart.h"
 #include "update.h"
 
 #include <algorithm>
@@ -20,6 +21,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, NOUTPUTS };
+constexpr int kRestartVersion = 1;    // z, vz, elapsed time, z at the start
 }
 
 /* The plate as fix nscd and fix wire see it: a body of the contact problem. */
@@ -197,13 +199,18 @@ void FixNSCDPlate::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   const double state[4] = {plate->z, plate->vz, plate->elapsed, plate->z_start};
-  const int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
+  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
   fwrite(state, sizeof(double), 4, fp);
 }
 
-void FixNSCDPlate::restart(char *buf)
+void FixNSCDPlate::restart(char *block)
 {
+  const char *buf = block;
+  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
+  if (version > kRestartVersion)
+    error->all(FLERR, "fix nscd/plate {}: the restart file holds the plate in format {}, this "
+               "build reads formats up to {}; use a newer build or another fix ID", id, version,
+               kRestartVersion);
   double state[4];
   std::memcpy(state, buf, sizeof(state));
   plate->z = state[0];

@@ -7,6 +7,7 @@
 #include "nscd_arrays.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
+#include "nscd_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
@@ -19,6 +20,8 @@
 using namespace LAMMPS_NS;
 
 namespace {
+constexpr int kRestartVersion = 1;    // the kind (0 plane, 1 cylinder), then the reference point
+
 nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
 {
   return nscd::Vec3(utils::numeric(FLERR, arg[0], false, lmp), utils::numeric(FLERR, arg[1], false, lmp),
@@ -231,13 +234,18 @@ void FixNSCDWall::write_restart(FILE *fp)
   if (comm->me != 0) return;
   const nscd::Vec3 &p = wall->reference_point();
   const double state[4] = {wall->kind == Wall::Kind::plane ? 0.0 : 1.0, p.x(), p.y(), p.z()};
-  const int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
+  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
   fwrite(state, sizeof(double), 4, fp);
 }
 
-void FixNSCDWall::restart(char *buf)
+void FixNSCDWall::restart(char *block)
 {
+  const char *buf = block;
+  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
+  if (version > kRestartVersion)
+    error->all(FLERR, "fix nscd/wall {}: the restart file holds the wall in format {}, this "
+               "build reads formats up to {}; use a newer build or another fix ID", id, version,
+               kRestartVersion);
   double state[4];
   std::memcpy(state, buf, sizeof(state));
   const Wall::Kind stored = state[0] == 0.0 ? Wall::Kind::plane : Wall::Kind::cylinder;

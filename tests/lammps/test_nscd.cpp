@@ -6,13 +6,16 @@
 #include "compute.h"
 #include "fix_nscd.h"
 #include "modify.h"
+#include "nscd_restart.h"
 #include "output.h"
 #include "thermo.h"
 
 #include "solver/contact_problem.h"
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <regex>
 
@@ -436,6 +439,80 @@ TEST_F(NSCDTest, RestartCarriesTheWarmStart)
             "fix g all gravity 1.0 vector 0 0 -1",
             "fix cold all nscd tolerance 1e-9 max_sweeps 5000 check 1", "run 1"});
   EXPECT_GT(fix_value("cold", 0), 10 * (sweeps_straight + 2));
+}
+
+// Copies a restart file with every versioned block of our fixes rewritten: `version` < 1
+// drops the header (the layout written before versions existed), else sets that version.
+static void rewrite_restart_versions(const std::string &from, const std::string &to, int version)
+{
+  std::ifstream in(from, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::int32_t header[2] = {LAMMPS_NS::nscd_restart::kMagic, 1};
+  const std::string marker(reinterpret_cast<const char *>(header), sizeof(header));
+  int blocks = 0;
+  for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
+    blocks++;
+    if (version >= 1) {
+      std::memcpy(&bytes[at + 4], &version, sizeof(int));
+      continue;
+    }
+    int size;
+    std::memcpy(&size, &bytes[at - sizeof(int)], sizeof(int));
+    size -= sizeof(header);
+    std::memcpy(&bytes[at - sizeof(int)], &size, sizeof(int));
+    bytes.erase(at, sizeof(header));
+  }
+  EXPECT_EQ(blocks, 4) << "fix nscd, two walls and the plate";
+  std::ofstream(to, std::ios::binary) << bytes;
+}
+
+// Restart blocks of fix nscd, nscd/wall and nscd/plate carry a format version; blocks without
+// one (written before versions) still read, and a newer version is refused by name.
+TEST_F(NSCDTest, RestartBlocksAreVersionedAndOldBlocksStillRead)
+{
+  const std::string solver = "fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1";
+  const std::vector<std::string> boundaries = {
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+      "fix pusher all nscd/wall plane -3.0 0 0 1 0 0 velocity 0.01 0 0",
+      "fix plate all nscd/plate 8 mass 1 gravity 1"};
+  scene(0.5, "tolerance 1e-9 max_sweeps 5000 check 1");
+  for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.5 + k);
+  commands({"shapes assign all shape 1 density 1", boundaries[1], boundaries[2], "run 300",
+            "write_restart " + scratch("new.restart"), "run 1"});
+  const double sweeps_straight = fix_value("solver", 0);
+  const double pusher_x = fix_value("pusher", 3), plate_z = fix_value("plate", 0);
+  if (rank() == 0) {
+    rewrite_restart_versions(scratch("new.restart"), scratch("old.restart"), 0);
+    rewrite_restart_versions(scratch("new.restart"), scratch("future.restart"), 2);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+
+  restart_instance();
+  commands({"read_restart " + scratch("old.restart"), "neighbor 0.3 bin",
+            "neigh_modify every 1 delay 0 check yes", "fix g all gravity 1.0 vector 0 0 -1"});
+  commands(boundaries);
+  commands({solver, "run 1"});
+  EXPECT_LE(fix_value("solver", 0), sweeps_straight + 2);    // the warm start was read
+  EXPECT_NEAR(fix_value("pusher", 3), pusher_x, 1e-12);
+  EXPECT_NEAR(fix_value("plate", 0), plate_z, 1e-9);
+
+  restart_instance();
+  commands({"read_restart " + scratch("future.restart"), "neighbor 0.3 bin",
+            "neigh_modify every 1 delay 0 check yes"});
+  EXPECT_NE(error_of(boundaries[0]).find("format 2"), std::string::npos);
+  EXPECT_NE(error_of(boundaries[2]).find("format 2"), std::string::npos);
+  EXPECT_NE(error_of(solver).find("format 2"), std::string::npos);
+}
+
+// Minimisers and r-RESPA would skip or garble the Moreau-Jean step: refused by name.
+TEST_F(NSCDTest, RespaAndMinimizeAreRefused)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1"});
+  EXPECT_NE(error_of("minimize 1e-4 1e-6 10 100").find("minimize"), std::string::npos);
+  run("run_style respa 2 2");
+  EXPECT_NE(error_of("run 1").find("respa"), std::string::npos);
 }
 
 TEST_F(NSCDTest, MovedWallComesBackFromRestart)
