@@ -242,17 +242,14 @@ void FixNSCD::build_bodies()
   double **x = atom->x, **v = atom->v, **f = atom->f;
   for (int b = 0; b < ntotal; b++) {
     nscd::SolverBody &body = solver->problem.bodies[b];
+    // From scratch: the slot may have held a boundary's body (the plate's, with locked x and
+    // y axes) on an earlier step with fewer ghosts.
+    body = nscd::SolverBody();
     body.position = vec3(x[b]);
     body.velocity = vec3(v[b]);
     body.angular_velocity = vec3(avec->omega[b]);
     const bool mobile = (atom->mask[b] & groupbit) && avec->shape[b] != 0;
-    if (!mobile) {    // not integrated here: moves with its own velocity, infinite mass
-      body.inv_mass = 0.0;
-      body.inv_inertia.setZero();
-      body.external_impulse.setZero();
-      body.external_angular_impulse.setZero();
-      continue;
-    }
+    if (!mobile) continue;    // not integrated here: moves with its own velocity, infinite mass
     const nscd::Vec3 moments = vec3(avec->inertia[b]);
     const nscd::Quat q = quat_of(avec->quat[b]);
     body.inv_mass = 1.0 / avec->rmass[b];
