@@ -1,16 +1,14 @@
 #include "shape/shape_library.h"
 
-#include <cerrno>
+#include <cfloat>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cfloat>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <istream>
-#include <limits>
 #include <ostream>
 #include <sstream>
 
@@ -22,11 +20,23 @@ constexpr int kMaxVerticesPerShape = 1000000;
 // megabyte-long "words").
 constexpr size_t kMaxQuotedLength = 60;
 
-// A token as shown in a message: in quotes, cut if very long.
+// A token as shown in a message: in quotes, control bytes as \xNN (a NUL would cut the
+// message short), cut if very long.
 std::string in_quotes(const std::string &token)
 {
-  if (token.size() <= kMaxQuotedLength) return "'" + token + "'";
-  return "'" + token.substr(0, kMaxQuotedLength) + "...' (" + std::to_string(token.size()) + " characters)";
+  std::string shown = "'";
+  char escaped[8];
+  for (size_t i = 0; i < token.size() && i < kMaxQuotedLength; ++i) {
+    const unsigned char c = static_cast<unsigned char>(token[i]);
+    if (c < ' ' || c == 0x7f) {
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+      shown += escaped;
+    } else {
+      shown += token[i];
+    }
+  }
+  if (token.size() <= kMaxQuotedLength) return shown + "'";
+  return shown + "...' (" + std::to_string(token.size()) + " characters)";
 }
 
 // A name is one word (the text format splits at white space and '#'); control bytes
@@ -166,13 +176,13 @@ class LibraryParser {
   {
     const char *begin = token.c_str();
     char *end = nullptr;
-    errno = 0;
     const double value = std::strtod(begin, &end);
     if (end == begin || *end != '\0') {
       fail(std::string(what) + " " + in_quotes(token) + " is not a number; write a decimal number such as 0.25 or 1e-3");
     }
-    // (Underflow to a tiny or zero value is fine; only overflow loses the number.)
-    if (!std::isfinite(value) || (errno == ERANGE && std::abs(value) > 1.0)) {
+    // Overflow gives inf. (Underflow, which also sets ERANGE, gives a tiny or zero value:
+    // fine for a coordinate or radius.)
+    if (!std::isfinite(value)) {
       fail(std::string(what) + " " + in_quotes(token) + " is not finite; give a finite number");
     }
     return value;
@@ -463,10 +473,6 @@ void check_deserialized_shape(const Spheropolyhedron &s)
     damaged("has a non-finite input centroid or a rotation that is not a unit quaternion");
   }
 }
-
-}    // namespace
-
-namespace {
 
 void check_room(int size, long long more)
 {

@@ -232,6 +232,8 @@ TEST(ShapeNames, AddRefusesTakenAndMultiWordNames)
   EXPECT_HAS(error_of([&] { library.add(ball, "a"); }), "shape name 'a' is already used by shape id 1");
   EXPECT_HAS(error_of([&] { library.add(ball, "two words"); }), "is not one word");
   EXPECT_HAS(error_of([&] { library.add(ball, "hash#tag"); }), "is not one word");
+  // A control byte is shown escaped, so that the message is not cut at a NUL.
+  EXPECT_HAS(error_of([&] { library.add(ball, std::string("a\0b", 3)); }), "shape name 'a\\x00b' is not one word");
   EXPECT_EQ(library.size(), 2);
   EXPECT_EQ(library.find("b"), 2);
   EXPECT_EQ(library.find("c"), 0);
