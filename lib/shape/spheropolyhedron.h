@@ -57,4 +57,16 @@ struct Spheropolyhedron {
 // fewer than 4 non-coplanar points, 3+ points that are collinear or coplanar (flat).
 Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double radius);
 
+// Mass and principal moments of inertia (body frame) of one grain of a shape.
+struct GrainInertia {
+  double mass = 0.0;
+  Vec3 inertia = Vec3::Zero();
+};
+
+// From a density (mass = density x volume) or from the grain's mass. Throws ShapeError,
+// naming the value, unless it is finite and > 0 and the mass and the three moments come
+// out as finite normal numbers (not inf, 0 or denormal, which would make garbage motion).
+GrainInertia grain_inertia_from_density(const Spheropolyhedron &shape, double density);
+GrainInertia grain_inertia_from_mass(const Spheropolyhedron &shape, double mass);
+
 }    // namespace nscd
