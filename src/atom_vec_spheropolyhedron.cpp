@@ -146,14 +146,23 @@ void AtomVecSpheropolyhedron::set_shape(int i, int shape_id, double mass)
     return;
   }
   const nscd::Spheropolyhedron &s = library->shape(shape_id);
-  const double density = mass / s.volume;
-  for (int k = 0; k < 3; k++) inertia[i][k] = density * s.principal_inertia[k];
+  nscd::GrainInertia grain;
+  try {
+    grain = nscd::grain_inertia_from_mass(s, mass);
+  } catch (std::exception &e) {
+    error->one(FLERR, "atom ID {} with shape {}: {}", atom->tag[i], shape_id, e.what());
+  }
+  for (int k = 0; k < 3; k++) inertia[i][k] = grain.inertia[k];
   radius[i] = s.bounding_radius;
 }
 
 void AtomVecSpheropolyhedron::add_shapes(const nscd::ShapeLibrary &more)
 {
-  library->append(more);
+  try {    // every rank holds the same library: all fail alike
+    library->append(more);
+  } catch (std::exception &e) {
+    error->all(FLERR, "{}", e.what());
+  }
   record_library_in_style_args();
 }
 

@@ -25,9 +25,11 @@
 #include "solver/rigid_motion.h"
 #include "solver/warm_start.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -143,9 +145,80 @@ void FixNSCD::init()
                "potential energy to minimise; let them settle with 'run' (unfix {} first to "
                "minimise other parts of the system)", id);
   dt = update->dt;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    error->all(FLERR, "fix nscd: timestep {} must be positive and finite; set it with 'timestep DT'", dt);
   find_partners();
+  check_no_other_integrator();
   check_no_points_in_group();
   check_grains_are_consistent();
+}
+
+/* A grain also moved by another integrator (fix nve, fix rigid, ...) would move twice per
+   step: it gains energy and sinks into its neighbours. */
+void FixNSCD::check_no_other_integrator()
+{
+  for (Fix *other : modify->get_fix_list()) {
+    if (other == this || !other->time_integrate) continue;
+    tagint first_shared = MAXTAGINT, any_shared;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit) && avec->shape[i] != 0)
+        first_shared = std::min(first_shared, atom->tag[i]);
+    MPI_Allreduce(&first_shared, &any_shared, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (any_shared != MAXTAGINT)
+      error->all(FLERR, "fix nscd: fix {} ({}) also moves grain ID {}, which fix nscd integrates: "
+                 "the grains would move twice per step; remove fix {} or give it a group "
+                 "without the grains", other->id, other->style, any_shared, other->id);
+  }
+}
+
+/* Grains are rigid bodies moved by contacts only: a bond or angle pulling on one (e.g. a
+   wire node bonded to a grain) is a deck error. Needs the run's bond lists. */
+void FixNSCD::check_no_bonds_on_grains()
+{
+  if (!atom->molecular) return;
+  tagint bad[2] = {MAXTAGINT, MAXTAGINT}, any[2];
+  auto note = [&](const int *atoms, int n) {
+    for (int k = 0; k < n; k++)
+      if (avec->shape[atoms[k]] != 0 && atom->tag[atoms[k]] < bad[0]) {
+        bad[0] = atom->tag[atoms[k]];
+        bad[1] = atom->tag[atoms[k == 0 ? 1 : 0]];
+      }
+  };
+  // (LAMMPS builds the lists of a kind only when its style is defined: without one, such
+  // bonds exert no force)
+  if (force->bond)
+    for (int n = 0; n < neighbor->nbondlist; n++) note(neighbor->bondlist[n], 2);
+  if (force->angle)
+    for (int n = 0; n < neighbor->nanglelist; n++) note(neighbor->anglelist[n], 3);
+  MPI_Allreduce(&bad[0], &any[0], 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any[0] == MAXTAGINT) return;
+  if (bad[0] != any[0]) bad[1] = MAXTAGINT;
+  MPI_Allreduce(&bad[1], &any[1], 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  error->all(FLERR, "fix nscd: grain ID {} is in a bond or angle (with atom ID {}); bonds and "
+             "angles join wire nodes (shape 0) only, grains are rigid bodies moved by contacts",
+             any[0], any[1]);
+}
+
+/* Overlap present at the start is not pushed apart by the solver (contacts only stop
+   further approach): grains that overlap by more than a fifth of the smaller one's bounding
+   radius were placed wrongly. */
+void FixNSCD::warn_if_grains_overlap()
+{
+  double worst[3] = {0.0, 0.0, 0.0};    // overlap / smaller radius, the two atom IDs
+  for (const nscd::Contact &c : pair->contacts()) {
+    const double smaller = std::min(avec->radius[c.body_i], avec->radius[c.body_j]);
+    const double depth = -c.gap / smaller;
+    if (depth > worst[0]) worst[0] = depth, worst[1] = (double) c.key.tag_i, worst[2] = (double) c.key.tag_j;
+  }
+  std::vector<double> all(3 * comm->nprocs);
+  MPI_Allgather(worst, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, world);
+  for (int r = 0; r < comm->nprocs; r++)
+    if (all[3 * r] > worst[0]) std::copy(&all[3 * r], &all[3 * r + 3], worst);
+  if (worst[0] > 0.2 && comm->me == 0)
+    error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} of the smaller one's "
+                   "bounding radius at the start of the run; contacts keep overlap from growing "
+                   "but do not push it apart. Place the grains apart (e.g. on a coarser lattice)",
+                   (tagint) worst[1], (tagint) worst[2], worst[0]);
 }
 
 /* Every atom of the group must be a grain: points (wire nodes) belong to the wire fix.
@@ -187,8 +260,12 @@ void FixNSCD::check_grains_are_consistent()
 void FixNSCD::find_partners()
 {
   boundaries.clear();
+  boundary_fixes.clear();
   for (Fix *other : modify->get_fix_list())
-    if (auto *b = dynamic_cast<NSCDBoundaryFix *>(other)) boundaries.push_back(&b->boundary());
+    if (auto *b = dynamic_cast<NSCDBoundaryFix *>(other)) {
+      boundaries.push_back(&b->boundary());
+      boundary_fixes.push_back(other);
+    }
 }
 
 /* A run can start without init() (run ... pre no): partners may have changed. The contact
@@ -196,6 +273,8 @@ void FixNSCD::find_partners()
 void FixNSCD::setup(int vflag)
 {
   find_partners();
+  check_no_bonds_on_grains();
+  warn_if_grains_overlap();
   run_started = true;
   post_force(vflag);
   measure_kinetic_energy();
@@ -263,8 +342,11 @@ void FixNSCD::build_bodies()
         dt * (vec3(avec->torque[b]) + nscd::gyroscopic_torque(moments, q, body.angular_velocity));
   }
   global_bodies.clear();
-  for (NSCDBoundary *b : boundaries) {
+  global_body_fixes.clear();
+  for (size_t k = 0; k < boundaries.size(); k++) {
+    NSCDBoundary *b = boundaries[k];
     if (!b->has_body()) continue;
+    global_body_fixes.push_back(boundary_fixes[k]);
     b->set_body_index((int) solver->problem.bodies.size());
     global_bodies.push_back((int) solver->problem.bodies.size());
     solver->problem.bodies.push_back(b->body(dt));
@@ -395,7 +477,36 @@ void FixNSCD::solve()
     solver->report.residual = solver->report.terms.residual();
   }
   solver->report.converged = solver->report.residual <= solver->options.tolerance;
+  if (!std::isfinite(solver->report.residual)) stop_on_non_finite_problem();
   solver->problem.finish();
+}
+
+/* A residual of inf or NaN: some external force or velocity is not finite or so large that
+   the impulses overflow. Name the body with the largest external impulse. */
+void FixNSCD::stop_on_non_finite_problem()
+{
+  const std::vector<nscd::SolverBody> &bodies = solver->problem.bodies;
+  double mine[2] = {-1.0, -1.0};    // |external impulse| (inf if not finite), body
+  auto consider = [&](int b) {
+    const double size = bodies[b].external_impulse.allFinite() && bodies[b].velocity.allFinite()
+        ? bodies[b].external_impulse.norm() : INFINITY;
+    if (size > mine[0]) mine[0] = size, mine[1] = b < atom->nlocal ? (double) atom->tag[b] : -1.0 - b;
+  };
+  for (int b = 0; b < atom->nlocal; b++) consider(b);
+  if (comm->me == 0)
+    for (int b : global_bodies) consider(b);
+  double worst[2];
+  MPI_Allreduce(mine, worst, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
+  std::string culprit = fmt::format("grain ID {}", (tagint) worst[1]);
+  if (worst[1] < 0.0) {    // a boundary's own body: which fix?
+    const int index = (int) (-1.0 - worst[1]);
+    for (size_t k = 0; k < global_bodies.size(); k++)
+      if (global_bodies[k] == index) culprit = fmt::format("the body of fix {}", global_body_fixes[k]->id);
+  }
+  error->all(FLERR, "fix nscd: step {}: the contact problem has no finite solution (residual {}); "
+             "the largest external impulse, {:.3g}, acts on {}. Check the forces, the plate's load "
+             "and rate, and the timestep", update->ntimestep, solver->report.residual, worst[0],
+             culprit);
 }
 
 void FixNSCD::exchange_velocities()

@@ -65,9 +65,11 @@ class FixNSCD : public Fix {
   class PairNSCD *pair = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
   std::vector<class NSCDBoundary *> boundaries;
+  std::vector<Fix *> boundary_fixes;       // the fix of each boundary
   size_t pair_count = 0;             // problem.contacts: pair_count grain pairs, then each
   std::vector<int> boundary_counts;  // boundary's in turn (as of the last solve)
   std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
+  std::vector<Fix *> global_body_fixes;  // their fixes
 
   bigint lists_of_last_solve = -1;    // neighbor->lastcall at the last solve
   bool run_started = true;            // setup() builds new lists (after balance, ...)
@@ -81,6 +83,10 @@ class FixNSCD : public Fix {
   double warm_start_dt = 0.0;    // timestep of the stored warm-start impulses
 
   void find_partners();
+  void check_no_other_integrator();
+  void check_no_bonds_on_grains();
+  void warn_if_grains_overlap();
+  void stop_on_non_finite_problem();
   void check_grains_are_consistent();
   void check_no_points_in_group();
   void build_bodies();

@@ -71,6 +71,7 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix ID group nscd/plate Z mass M "
                "[load F0] [rate R] [gravity G] [friction MU] [restitution E]'");
   p.z = p.z_start = utils::numeric(FLERR, arg[3], false, lmp);
+  if (!std::isfinite(p.z)) error->all(FLERR, "fix nscd/plate: the height {} must be finite", arg[3]);
   p.mass = utils::numeric(FLERR, arg[5], false, lmp);
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
     error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", p.mass);
@@ -78,6 +79,8 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd/plate: keyword '{}' needs a value", key);
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (!std::isfinite(value))
+      error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
     if (key == "load") p.load_start = value;
     else if (key == "rate") p.load_rate = value;
     else if (key == "gravity") p.gravity = value;

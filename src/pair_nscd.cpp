@@ -5,6 +5,7 @@
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
@@ -17,6 +18,7 @@
 #include "shape/shape_library.h"
 #include "solver/contact_problem.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -76,10 +78,14 @@ void PairNSCD::settings(int narg, char **arg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (strcmp(arg[iarg], "activation") == 0) {
-      if (value < 0.0) error->all(FLERR, "pair_style nscd: activation {} must be >= 0", value);
+      if (!(value >= 0.0) || !std::isfinite(value))
+        error->all(FLERR, "pair_style nscd: activation {} must be finite and >= 0", value);
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
-      if (value < 0.0) error->all(FLERR, "pair_style nscd: activation/fraction {} must be >= 0", value);
+      if (!(value >= 0.0 && value <= 1.0))
+        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, 1] (a fraction of "
+                   "the smallest grain's bounding radius); for fast grains lower the timestep",
+                   value);
       activation_given = -1.0;
       activation_fraction = value;
     } else {
@@ -137,6 +143,12 @@ void PairNSCD::init_style()
       smallest = std::min(smallest, avec->shapes().shape(id).bounding_radius);
     activation = activation_fraction * smallest;
   }
+  const double largest = avec->shapes().max_bounding_radius();
+  if (activation > 2.0 * largest)
+    error->all(FLERR, "pair_style nscd: activation {} is larger than the largest grain ({} across): "
+               "the neighbour lists would hold far grains; use at most {}", activation,
+               2.0 * largest, 2.0 * largest);
+  check_periodic_box_holds_grains();
   neighbor->add_request(this);
   // Contacts are found from the neighbour list every step: a stale list misses them.
   if ((neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check) && comm->me == 0)
@@ -144,6 +156,31 @@ void PairNSCD::init_style()
                    "(neigh_modify every {} delay {} check {}); contacts can be missed. Use "
                    "'neigh_modify every 1 delay 0 check yes'", neighbor->every, neighbor->delay,
                    neighbor->dist_check ? "yes" : "no");
+}
+
+/* A grain wider than a periodic box touches its own image: a rigid body cannot. The widths
+   are those between opposite faces (also of a triclinic box). */
+void PairNSCD::check_periodic_box_holds_grains()
+{
+  double mine = 0.0, widest = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) mine = std::max(mine, avec->radius[i]);
+  MPI_Allreduce(&mine, &widest, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double a[3] = {domain->xprd, 0.0, 0.0}, b[3] = {domain->xy, domain->yprd, 0.0},
+               c[3] = {domain->xz, domain->yz, domain->zprd};
+  const double *edges[3] = {a, b, c};
+  const double volume = domain->xprd * domain->yprd * domain->zprd;
+  const char *names = "xyz";
+  for (int d = 0; d < 3; d++) {
+    if (!domain->periodicity[d]) continue;
+    const double *u = edges[(d + 1) % 3], *w = edges[(d + 2) % 3];
+    const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double width = volume / std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    if (width < 2.0 * widest + activation)
+      error->all(FLERR, "pair_style nscd: the periodic box is {:.6g} wide in {}, but a grain is up "
+                 "to {:.6g} across (plus the activation distance {:.6g}): it would touch its own "
+                 "image. Make the box wider or the boundary non-periodic", width, names[d],
+                 2.0 * widest, activation);
+  }
 }
 
 double PairNSCD::init_one(int i, int j)

@@ -38,7 +38,10 @@ class PairNSCD : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
-  double radii2cut(double, double) override;
+  // Cutoff of `neighbor multi` collections. Overrides Pair::radii2cut of LAMMPS up to
+  // 29 Aug 2024 / 4 Feb 2025 (no `override`: LAMMPS 4 Jul 2026 dropped it and sums the two
+  // radii itself, so there the activation distance must fit in the neighbour skin).
+  double radii2cut(double, double);
 
   // Grain-grain contacts found by the last compute(): body indices are local atom
   // indices (owned or ghost), keys are (tag, tag, feature) canonical for warm starting.
@@ -60,6 +63,7 @@ class PairNSCD : public Pair {
 
   void allocate();
   void add_grain_contacts(int i, int j);
+  void check_periodic_box_holds_grains();
 };
 
 }    // namespace LAMMPS_NS
