@@ -106,4 +106,5 @@ void ComputeNSCDColumn::compute_vector()
   vector[RETAINED] = all[0];
   vector[GRAINS] = all[1];
   vector[RETAINED_FRACTION] = all[1] > 0.0 ? all[0] / all[1] : 0.0;
+  if (all[1] == 0.0) vector[TOP] = 0.0;    // no grains yet
 }
