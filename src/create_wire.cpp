@@ -431,6 +431,10 @@ void CreateWire::create_nodes()
 
   const bigint natoms_before = atom->natoms;
   const int nlocal_before = atom->nlocal;
+  // New atoms take the slots after the owned ones, where the ghosts of the last run are:
+  // those are gone now (as in create_atoms), the next run's setup rebuilds them.
+  atom->nghost = 0;
+  atom->avec->clear_bonus();
   const double *sublo = domain->triclinic ? domain->sublo_lamda : domain->sublo;
   const double *subhi = domain->triclinic ? domain->subhi_lamda : domain->subhi;
   for (size_t k = 0; k < r.in_box.size(); k++) {
