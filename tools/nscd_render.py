@@ -165,8 +165,9 @@ class Renderer:
                                Function=f"fn/{fmax!r}")
         source = scaled
         if self.args.min_force > 0:
-            source = pv.Threshold(Input=scaled, Scalars=["POINTS", "force"])
-            _threshold_range(source, self.args.min_force, 1e300)
+            kept = pv.Threshold(Input=scaled, Scalars=["POINTS", "force"])
+            _threshold_range(kept, self.args.min_force, 1e300)
+            source = pv.ExtractSurface(Input=kept)    # Threshold gives cells, Tube wants lines
         radius = pv.Calculator(Input=source, AttributeType="Point Data", ResultArrayName="radius",
                                Function=f"{0.1 * largest!r}+{0.9 * largest!r}*min(force,1)")
         tube = pv.Tube(Input=radius)

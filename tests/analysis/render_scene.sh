@@ -21,8 +21,10 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work"
 /usr/bin/python3 "$src/tools/nscd-analysis" vtk-wire --elements wire.300.dump --nodes nodes.300.dump -o wire
 render() {
   xvfb-run -a "$pvbatch" "$src/tools/nscd_render.py" --grains grains.300.vtk --wire wire.300.vtp \
-    --network network.300.vtp --out fig2 --size 400 400 > render.log 2>&1
+    --network network.300.vtp --min-force 0.01 --out fig2 --size 400 400 > render.log 2>&1
 }
 # A first X server start on a fresh machine has been seen to abort in OpenGL set-up once; retry.
 render || { echo "pvbatch failed once:"; tail -5 render.log; render; } || { cat render.log; exit 1; }
+# pvbatch exits 0 after pipeline errors: they must not happen
+if grep -q " ERR| " render.log; then grep " ERR| " render.log | head -5; exit 1; fi
 /usr/bin/python3 "$src/tests/analysis/check_png.py" 0.02 fig2_column.png fig2_network_side.png fig2_network_top.png

@@ -89,6 +89,14 @@ class LogReading(unittest.TestCase):
             with self.assertRaisesRegex(logs.LogError, "no run prints all of v_x.*thermo columns: Step"):
                 logs.thermo_columns(path, ["v_x"])
 
+    def test_reset_timestep_keeps_the_next_run(self):
+        runs = [(["Step", "v_h"], [[0, 5.0], [600, 4.0]]), (["Step", "v_h"], [[0, 4.0], [300, 3.5]])]
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "log.lammps")
+            with open(path, "w") as f:
+                f.write(synthetic.log_text(runs))
+            np.testing.assert_array_equal(logs.thermo_columns(path, ["v_h"]).ravel(), [5.0, 4.0, 4.0, 3.5])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -163,7 +163,7 @@ def cmd_fabric_field(args):
 def _parse_runs(runs):
     out = []
     for run in runs:
-        label, sep, pattern = run.partition("=")
+        label, sep, pattern = run.rpartition("=")    # labels may hold "=" (Fz=800)
         if not sep or not label or not pattern:
             raise SystemExit(f"nscd-analysis: --run '{run}' must be LABEL=FILES (e.g. column='col/fabric.*.dump')")
         out.append((label, pattern.split(",")))

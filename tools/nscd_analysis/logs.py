@@ -53,9 +53,10 @@ def _numeric_row_follows(lines, k, n):
 
 
 def thermo_columns(path, names, require_all=True):
-    """The named columns over the runs of the log, concatenated in run order (a later run
-    repeating the previous run's last step keeps one row). require_all: only runs that
-    print all of them; else every run that prints any, NaN for the others."""
+    """The named columns over the runs of the log, concatenated in run order (a run that
+    starts by repeating the previous run's last step drops that row; after reset_timestep
+    Step starts again). require_all: only runs that print all of them; else every run that
+    prints any, NaN for the others."""
     parts, last_step = [], None
     blocks = read_thermo(path)
     for columns, data in blocks:
@@ -65,8 +66,8 @@ def thermo_columns(path, names, require_all=True):
         rows = np.ones(len(data), dtype=bool)
         if "Step" in columns:
             step = data[:, columns.index("Step")]
-            if last_step is not None:
-                rows = step > last_step
+            if last_step is not None and step[0] == last_step:
+                rows[0] = False
             last_step = step[-1]
         part = np.full((int(rows.sum()), len(names)), np.nan)
         for k, n in enumerate(names):
