@@ -113,6 +113,21 @@ class TimeSeries(unittest.TestCase):
                 self.assertEqual(cli.main(["timeseries", log, "--plot", "Step:v_nothing", "-o", out]), 1)
             self.assertIn("no run prints all of Step, v_nothing", err.getvalue())
 
+    def test_column_preset_reads_the_column_decks_thermo(self):
+        names = ["Step", "v_phase", "v_height", "v_retained", "v_e_stretch", "v_e_bend", "v_e_contact",
+                 "v_plate_force", "v_plate_disp"]
+        rows = [[0, 1, 5.0, 1.0, 0, 0, 0, 0, 0], [200, 3, 4.8, 0.95, 0.1, 0.01, 0.02, 0, 0],
+                [400, 5, 4.7, 0.95, 0.2, 0.02, 0.03, 50.0, -0.01]]
+        with tempfile.TemporaryDirectory() as d:
+            log = os.path.join(d, "log.column")
+            with open(log, "w") as f:
+                f.write(synthetic.log_text([(names, rows)]))
+            out = os.path.join(d, "column")
+            self.assertEqual(cli.main(["timeseries", log, "--preset", "column", "-o", out]), 0)
+            table = synthetic.read_csv(out + ".csv")
+            np.testing.assert_array_equal(synthetic.csv_column(table, "v_retained"), [1.0, 0.95, 0.95])
+            np.testing.assert_array_equal(synthetic.csv_column(table, "v_plate_force"), [0, 0, 50.0])
+
 
 class _stderr:
     """Captures sys.stderr."""

@@ -286,9 +286,17 @@ def cmd_wire_contacts(args):
 
 # --- timeseries -------------------------------------------------------------------------
 
+# The thermo columns of examples/column/in.column (and examples/silo), for --preset column.
+COLUMN_PRESET = ["Step:v_height", "Step:v_retained", "Step:v_e_stretch,v_e_bend,v_e_contact",
+                 "v_plate_disp:v_plate_force"]
+
+
 def cmd_timeseries(args):
     panels = []
-    for spec in args.plot:
+    specs = (COLUMN_PRESET if args.preset == "column" else []) + (args.plot or [])
+    if not specs:
+        raise SystemExit("nscd-analysis timeseries: give --plot X:Y (or --preset column)")
+    for spec in specs:
         x, sep, ys = spec.partition(":")
         if not sep or not ys:
             raise SystemExit(f"nscd-analysis: --plot '{spec}' must be X:Y[,Y2...] (thermo column names)")
@@ -400,7 +408,10 @@ def parser():
 
     p = sub.add_parser("timeseries", help="thermo columns of a log against each other")
     p.add_argument("log", help="LAMMPS log file")
-    p.add_argument("--plot", action="append", required=True, help="X:Y[,Y2...], one panel each")
+    p.add_argument("--plot", action="append", help="X:Y[,Y2...], one panel each")
+    p.add_argument("--preset", choices=("column",),
+                   help="column: height, retained fraction, wire energies vs step and plate force vs "
+                        "displacement, as examples/column/in.column prints them")
     p.add_argument("--out", "-o", required=True)
     p.set_defaults(func=cmd_timeseries)
 
