@@ -117,14 +117,10 @@ void AngleWire::write_data(FILE *fp)
 
 double AngleWire::single(int type, int i1, int i2, int i3)
 {
+  // the images of the outer nodes closest to the middle one, as compute angle/local uses
   double **x = atom->x;
-  // closest images, as compute angle/local does for its geometry
-  double d1[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
-  double d2[3] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1], x[i3][2] - x[i2][2]};
-  domain->minimum_image(d1);
-  domain->minimum_image(d2);
-  const double *b = x[i2];
-  const double a[3] = {b[0] + d1[0], b[1] + d1[1], b[2] + d1[2]};
-  const double c[3] = {b[0] + d2[0], b[1] + d2[1], b[2] + d2[2]};
-  return joint(type, a, b, c).energy;
+  double a[3], c[3];
+  domain->closest_image(x[i2], x[i1], a);
+  domain->closest_image(x[i2], x[i3], c);
+  return joint(type, a, x[i2], c).energy;
 }

@@ -447,4 +447,12 @@ GrainInertia grain_inertia_from_mass(const Spheropolyhedron &shape, double mass)
   return checked_grain_inertia(shape, mass, "mass " + describe(mass));
 }
 
+double extent(const Spheropolyhedron &shape, const Quat &orientation, const Vec3 &direction)
+{
+  const Vec3 body_direction = orientation.conjugate() * direction;    // one rotation, not one per vertex
+  double reach = -INFINITY;
+  for (const Vec3 &v : shape.vertices) reach = std::max(reach, v.dot(body_direction));
+  return reach + shape.radius;
+}
+
 }    // namespace nscd

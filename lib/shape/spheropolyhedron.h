@@ -57,6 +57,11 @@ struct Spheropolyhedron {
 // fewer than 4 non-coplanar points, 3+ points that are collinear or coplanar (flat).
 Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double radius);
 
+// How far the dilated surface of a grain turned by `orientation` reaches along the unit
+// `direction` from its centre of mass: max over core vertices of (R v).d, plus the radius
+// (the support function). The grain's top is z + extent(shape, q, +z).
+double extent(const Spheropolyhedron &shape, const Quat &orientation, const Vec3 &direction);
+
 // Mass and principal moments of inertia (body frame) of one grain of a shape.
 struct GrainInertia {
   double mass = 0.0;
