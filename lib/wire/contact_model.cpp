@@ -86,20 +86,22 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
 {
   if (reindexed) carry_memories();
   // A grain moved since the last step brings its pairs' last gaps closer by as much.
-  if (lists_valid_ && scene.grains.size() == scene_.grains.size()) {
+  if (lists_valid_ && scene.grains.size() == grains_last_step_.size()) {
     std::vector<double> moved(scene.grains.size());
     for (size_t g = 0; g < moved.size(); ++g) {
-      const Pose &now = scene.grains[g].pose, &then = scene_.grains[g].pose;
+      const Pose &now = scene.grains[g].pose, &then = grains_last_step_[g];
       moved[g] = (now.position - then.position).norm() +
                  turned_by(then.orientation, now.orientation) * scene.grains[g].shape->bounding_radius;
     }
     for (GrainPair &p : grain_pairs_) p.clearance -= moved[p.grain];
   }
-  double fastest_before = 0.0;
-  for (const BoundaryLink &b : scene_.boundaries) fastest_before = std::max(fastest_before, b.speed);
-  boundary_travel_ += fastest_before * step_;    // the boundaries moved over the last step
+  boundary_travel_ += fastest_boundary_ * step_;    // the boundaries moved over the last step
   step_ = dt_step;
   scene_ = std::move(scene);
+  grains_last_step_.clear();
+  for (const GrainCopy &g : scene_.grains) grains_last_step_.push_back(g.pose);
+  fastest_boundary_ = 0.0;
+  for (const BoundaryLink &b : scene_.boundaries) fastest_boundary_ = std::max(fastest_boundary_, b.speed);
   frames_.clear();
   grain_features_.clear();
   for (const GrainCopy &g : scene_.grains) {
@@ -126,9 +128,7 @@ bool ContactModel::lists_outdated(const std::vector<Vec3> &x, double tau) const
   double node2 = 0.0;
   for (size_t k = 0; k < x.size(); ++k) node2 = std::max(node2, (x[k] - built_at_[k]).squaredNorm());
   const double node = std::sqrt(node2);
-  double fastest = 0.0;
-  for (const BoundaryLink &b : scene_.boundaries) fastest = std::max(fastest, b.speed);
-  const double other = std::max(other_moved_, boundary_travel_ + fastest * tau);
+  const double other = std::max(other_moved_, boundary_travel_ + fastest_boundary_ * tau);
   return node + std::max(node, other) > skin_;
 }
 
@@ -168,9 +168,7 @@ void ContactModel::rebuild(const std::vector<Vec3> &x, double tau)
   built_at_ = x;
   grains_built_at_.clear();
   for (const GrainCopy &g : scene_.grains) grains_built_at_.push_back(g.pose);
-  double fastest = 0.0;
-  for (const BoundaryLink &b : scene_.boundaries) fastest = std::max(fastest, b.speed);
-  boundary_travel_ = -fastest * tau;
+  boundary_travel_ = -fastest_boundary_ * tau;
   other_moved_ = 0.0;
   lists_valid_ = true;
   ++rebuilds_;

@@ -146,7 +146,8 @@ class ContactModel {
   // The scene of a new grain step. reindexed: the node, element or grain indices changed
   // since the last step (the candidate lists are rebuilt, memories carried by key).
   void begin_step(ContactScene scene, double dt_step, bool reindexed);
-  const ContactScene &scene() const { return scene_; }
+  // Hands the scene back, so that the caller updates it for the next step without a copy.
+  ContactScene take_scene() { return std::move(scene_); }
 
   // One substep: nodes at positions x with velocities v (all nodes of the scene), tau
   // into the grain step, substep dt. Adds the contact forces to f, the reactions to
@@ -207,7 +208,9 @@ class ContactModel {
   // displacements since the last build
   std::vector<Vec3> built_at_;              // node positions
   std::vector<Pose> grains_built_at_;
+  std::vector<Pose> grains_last_step_;
   double boundary_travel_ = 0.0;            // of the fastest boundary, before this step
+  double fastest_boundary_ = 0.0;           // speed, this step
   double other_moved_ = 0.0;                // largest grain or boundary displacement at step start
   double step_ = 0.0;
 

@@ -96,19 +96,23 @@ WireTopology open_chain_topology(int num_nodes, double rest_length)
   return topology;
 }
 
-ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
-                                 double k_rot, const std::vector<Vec3> &positions,
-                                 std::vector<Vec3> &forces)
+namespace {
+
+template <class LawOf, class StiffnessOf>
+ElasticEnergy add_elastic_forces_with(const WireTopology &topology, const LawOf &law_of,
+                                      const StiffnessOf &k_rot_of, const std::vector<Vec3> &positions,
+                                      std::vector<Vec3> &forces)
 {
   ElasticEnergy energy;
   for (const WireElement &e : topology.elements) {
-    const AxialForces f = axial_element_forces(axial, e.rest_length, positions[e.a], positions[e.b]);
+    const AxialForces f = axial_element_forces(law_of(e), e.rest_length, positions[e.a], positions[e.b]);
     forces[e.a] += f.on_a;
     forces[e.b] += f.on_b;
     energy.axial += f.energy;
   }
-  if (k_rot == 0.0) return energy;    // a string: skip the bending work entirely
   for (const WireJoint &j : topology.joints) {
+    const double k_rot = k_rot_of(j);
+    if (k_rot == 0.0) continue;    // a string: no bending work
     const BendingForces f = bending_node_forces(k_rot, positions[j.a], positions[j.b], positions[j.c]);
     forces[j.a] += f.on_a;
     forces[j.b] += f.on_b;
@@ -116,6 +120,25 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &a
     energy.bending += f.energy;
   }
   return energy;
+}
+
+}    // namespace
+
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
+                                 double k_rot, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces)
+{
+  return add_elastic_forces_with(
+      topology, [&](const WireElement &) { return axial; }, [&](const WireJoint &) { return k_rot; },
+      positions, forces);
+}
+
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces)
+{
+  return add_elastic_forces_with(
+      topology, [](const WireElement &e) { return e.law; }, [](const WireJoint &j) { return j.k_rot; },
+      positions, forces);
 }
 
 }    // namespace nscd::wire

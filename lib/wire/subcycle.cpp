@@ -100,9 +100,10 @@ void prepare_wire_nodes(WireNodeSet &nodes, double dt)
       for (Gear5State &s : nodes.state) gear5_change_step(s, nodes.dt, dt);
     nodes.dt = dt;
   }
-  nodes.positions.resize(n);
-  nodes.velocities.resize(n);
-  nodes.forces.resize(n);
+  const std::size_t slots = n + static_cast<std::size_t>(std::max(nodes.copies, 0));
+  nodes.positions.resize(slots);
+  nodes.velocities.resize(slots);
+  nodes.forces.resize(slots);
 }
 
 void predict_wire_nodes(WireNodeSet &nodes)
@@ -112,8 +113,8 @@ void predict_wire_nodes(WireNodeSet &nodes)
     if (!nodes.fixed[i]) gear5_predict(nodes.state[i]);
     nodes.positions[i] = nodes.state[i].position();
     nodes.velocities[i] = nodes.fixed[i] ? Vec3::Zero() : nodes.state[i].velocity(nodes.dt);
-    nodes.forces[i].setZero();
   }
+  for (Vec3 &f : nodes.forces) f.setZero();
 }
 
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)

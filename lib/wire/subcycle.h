@@ -79,8 +79,11 @@ struct WireNodeSet {
   std::vector<std::uint8_t> fixed;    // 1: position kept, velocity zero (clamps, anchors)
   double dt = 0.0;                    // step the scaled derivatives refer to
 
-  // Scratch, sized by resize(): predicted positions/velocities and the forces.
+  // Scratch, sized by prepare_wire_nodes(): predicted positions/velocities and the forces,
+  // with `copies` more slots after the nodes for copies the caller fills in each substep
+  // (e.g. ghost atoms of other MPI ranks; they are not integrated).
   std::vector<Vec3> positions, velocities, forces;
+  int copies = 0;
 
   int size() const { return static_cast<int>(state.size()); }
   // Nodes at rest at the given positions with the given mass each, none fixed.
@@ -93,7 +96,8 @@ struct SubstepInfo {
   double dt;        // dt_SP
 };
 
-// Predicts every free node and fills nodes.positions / nodes.velocities; zeroes forces.
+// Predicts every free node and fills nodes.positions / nodes.velocities; zeroes all forces
+// (copies included).
 void predict_wire_nodes(WireNodeSet &nodes);
 // Corrects every free node with a = force / mass; fixed nodes stay put at rest.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);
