@@ -1,4 +1,6 @@
-/* fix wire: the wire subcycle of lib/wire driven from LAMMPS' post_force. */
+/* fix wire: the wire subcycle of lib/wire driven from LAMMPS' post_force. Gathers the wire
+   nodes, grains and boundaries, calls lib/wire, scatters the forces; LAMMPS' communication,
+   restart and output. The physics is in lib/wire (doc/wire_model.md). */
 
 #include "fix_wire.h"
 
@@ -19,12 +21,13 @@
 #include "nscd_boundary_fix.h"
 #include "nscd_contact.h"
 #include "nscd_gather.h"
-#include "update.h"
 #include "timer.h"
+#include "update.h"
 #include "wire/contact_model.h"
 #include "wire/elastic_forces.h"
 #include "wire/stability.h"
 #include "wire/subcycle.h"
+#include "wire/wire_step.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,11 +44,12 @@ enum Diagnostic {
   E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
   GRAIN_FZ, DT_SP_STABLE, N_WIRE_BOUNDARY, STEPS_TOO_FAST
 };
+constexpr double kRestartVersion = -2.0;    // first number of the global restart block
 
-// A wall or the plate seen by the wire's contact model.
+// A wall or the plate as the wire's contact model sees it.
 struct BoundaryView final : wire::NodeBoundary {
   NSCDBoundary *boundary = nullptr;
-  int groupbit = 0;          // the nodes it touches: those of its fix group
+  int groupbit = 0;    // the nodes it touches: those of its fix group
   wire::BoundaryLink link{};
   nscd::ContactPoint touch_sphere(const Vec3 &c, double r, double tau) const override
   {
@@ -53,76 +57,40 @@ struct BoundaryView final : wire::NodeBoundary {
   }
   Vec3 surface_velocity() const override { return boundary->surface_velocity(); }
 };
-
-// One contact memory in restart files and between ranks: key, springs and weights.
-struct StoredRecord {
-  double key[4];
-  double memory[2 * wire::TangentialHistory::kNumDoubles + 2];
-};
-constexpr double kRestartVersion = -2.0;    // first number of the global restart block
-
-StoredRecord record_of(const wire::StoredContact &c)
-{
-  StoredRecord r{};
-  for (int d = 0; d < 4; d++) r.key[d] = (double) c.key[d];
-  for (int e = 0; e < 2; e++) {
-    double *m = r.memory + 5 * e;
-    std::copy(c.memory.spring[e].xi, c.memory.spring[e].xi + 3, m);
-    m[3] = c.memory.spring[e].sliding;
-    m[4] = c.memory.weight[e];
-  }
-  return r;
-}
-
-wire::StoredContact contact_of(const StoredRecord &r)
-{
-  wire::StoredContact c;
-  for (int d = 0; d < 4; d++) c.key[d] = (std::int64_t) r.key[d];
-  for (int e = 0; e < 2; e++) {
-    const double *m = r.memory + 5 * e;
-    std::copy(m, m + 3, c.memory.spring[e].xi);
-    c.memory.spring[e].sliding = m[3];
-    c.memory.weight[e] = m[4];
-  }
-  return c;
-}
 }    // namespace
 
-struct FixWire::Lib {
+struct FixWire::Lib : wire::Exchange {
+  FixWire *fix;
   wire::SoftContactLaw law;
   std::unique_ptr<wire::ContactModel> contacts;
   wire::SubcyclePlan plan;
   std::array<double, 6> corrector = wire::gear5_corrector_coefficients(wire::GearCorrector::ThreeSixteenths);
-  wire::WireNodeSet nodes;          // owned nodes, then slots for the ghost copies
-  wire::WireTopology topology;      // this rank's elements and joints, in node indices
-  wire::GrainForceAccumulator reactions;
-  wire::ContactScene scene;
+  wire::WireStep step;    // owned nodes, then the ghost copies; this rank's elements and joints
+  wire::StepTiming timing;
   std::vector<BoundaryView> boundaries;
-  std::vector<Vec3> step_start, external;
+  std::vector<Vec3> step_start;
   std::vector<wire::StoredContact> restored;    // from a restart file, for the contact model
+  explicit Lib(FixWire *f) : fix(f) {}
+  // The subcycle's communication: positions and velocities to the ghost copies of the nodes,
+  // their forces back to the owners (nodes only).
+  void share_copies(wire::WireNodeSet &) override { fix->communicate(Comm::node_state, false, true); }
+  void return_copy_forces(wire::WireNodeSet &) override { fix->communicate(Comm::node_force, true, true); }
 };
 
 /* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [radius R]
                      [damp C] [substeps N|auto] [dt_sp DT] [safety S] [contacts_per_node N]
                      [skin S] */
-FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib)
+FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
 {
-  time_integrate = 1;
-  restart_global = 1;
-  restart_peratom = 1;
-  create_attribute = 1;
-  vector_flag = 1;
+  time_integrate = restart_global = restart_peratom = create_attribute = 1;
+  vector_flag = global_freq = 1;
   size_vector = (int) diagnostics.size();
-  global_freq = 1;
   extvector = 0;
-  comm_forward = 6;
-  comm_reverse = 6;
-
-  int iarg = 3;
-  while (iarg < narg) parse_option(narg, arg, iarg);
+  comm_forward = comm_reverse = 6;
+  for (int iarg = 3; iarg < narg;) parse_option(narg, arg, iarg);
   wire::SoftContactLaw &law = lib->law;
-  // One coefficient given: static = dynamic (with mu_d left at 0 a contact would lose all
-  // friction after its first slip).
+  // One friction coefficient given: static = dynamic (with mu_d left at 0 a contact would
+  // lose all friction after its first slip).
   if (mu_s_given && !mu_d_given) law.mu_d = law.mu_s;
   if (mu_d_given && !mu_s_given) law.mu_s = law.mu_d;
   if (law.k_n > 0.0) {    // k_n = 0: no contacts at all, the other coefficients unused
@@ -153,30 +121,30 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   const std::string key = arg[iarg];
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value", key);
   const char *value = arg[iarg + 1];
-  auto positive_or_zero = [&](double x) {
+  const double x = key == "substeps" ? 0.0 : utils::numeric(FLERR, value, false, lmp);
+  auto positive_or_zero = [&]() {
     if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
     return x;
   };
-  const double x = key == "substeps" ? 0.0 : utils::numeric(FLERR, value, false, lmp);
   wire::SoftContactLaw &law = lib->law;
-  if (key == "k_n") law.k_n = positive_or_zero(x);
-  else if (key == "gamma_n") law.gamma_n = positive_or_zero(x);
-  else if (key == "k_t") law.k_t = positive_or_zero(x);
-  else if (key == "gamma_t") law.gamma_t = positive_or_zero(x);
-  else if (key == "mu_s") law.mu_s = positive_or_zero(x), mu_s_given = true;
-  else if (key == "mu_d") law.mu_d = positive_or_zero(x), mu_d_given = true;
-  else if (key == "radius") wire_radius = positive_or_zero(x);
-  else if (key == "damp") node_damping = positive_or_zero(x);
-  else if (key == "contacts_per_node") contacts_per_node = positive_or_zero(x);
+  if (key == "k_n") law.k_n = positive_or_zero();
+  else if (key == "gamma_n") law.gamma_n = positive_or_zero();
+  else if (key == "k_t") law.k_t = positive_or_zero();
+  else if (key == "gamma_t") law.gamma_t = positive_or_zero();
+  else if (key == "mu_s") law.mu_s = positive_or_zero(), mu_s_given = true;
+  else if (key == "mu_d") law.mu_d = positive_or_zero(), mu_d_given = true;
+  else if (key == "radius") wire_radius = positive_or_zero();
+  else if (key == "damp") node_damping = positive_or_zero();
+  else if (key == "contacts_per_node") contacts_per_node = positive_or_zero();
   else if (key == "skin") {
-    contact_skin = x;
     if (!(x > 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
+    contact_skin = x;
   } else if (key == "dt_sp") {
-    requested_dt_sp = positive_or_zero(x);
+    requested_dt_sp = positive_or_zero();
     requested_substeps = 0;
   } else if (key == "safety") {
+    if (!(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
     safety = x;
-    if (!(safety > 0.0 && safety <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", safety);
   } else if (key == "substeps") {
     requested_dt_sp = 0.0;
     requested_substeps = strcmp(value, "auto") == 0 ? 0 : utils::inumeric(FLERR, value, false, lmp);
@@ -231,7 +199,6 @@ void FixWire::check_partners()
   if (atom->nangles > 0 && !angle)
     error->all(FLERR, "fix wire needs angle_style wire for its joints (angle_style is '{}')",
                force->angle_style ? force->angle_style : "none");
-
   tagint first_grain = MAXTAGINT, any_grain;
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && avec->shape[i] != 0) first_grain = std::min(first_grain, atom->tag[i]);
@@ -239,14 +206,13 @@ void FixWire::check_partners()
   if (any_grain != MAXTAGINT)
     error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the group must "
                "hold wire nodes (shape 0) only, grains belong to fix nscd", any_grain, group->names[igroup]);
-
   // post_force fixes after this one would change node forces the subcycle has already used
   bool after = false;
   for (int f = 0; f < modify->nfix; f++) {
     if (modify->fix[f] == this) after = true;
     else if (after && (modify->fmask[f] & POST_FORCE) && acts_on_nodes(modify->fix[f]) && comm->me == 0)
-      error->warning(FLERR, "fix wire: fix {} ({}) is defined after fix wire and acts in "
-                     "post_force: the wire subcycle does not see its forces; define it before fix wire",
+      error->warning(FLERR, "fix wire: fix {} ({}) is defined after fix wire and acts in post_force: "
+                     "the wire subcycle does not see its forces; define it before fix wire",
                      modify->fix[f]->id, modify->fix[f]->style);
   }
 }
@@ -261,9 +227,9 @@ bool FixWire::acts_on_nodes(const Fix *other) const
   return any != 0;
 }
 
-/* The walls and the plate: the wire touches the nodes of their groups, with fix wire's law
-   and the boundary's friction (mu_s = mu_d). fix nscd solves the step in final_integrate,
-   after this post_force: it sees the wire's forces of the step whatever the fix order. */
+/* The walls and the plate touch the wire nodes of their groups, with fix wire's law and the
+   boundary's friction (mu_s = mu_d). fix nscd solves in final_integrate, after this
+   post_force: it sees the wire's forces of the step whatever the order of the fixes. */
 void FixWire::find_boundaries()
 {
   lib->boundaries.clear();
@@ -292,13 +258,11 @@ void FixWire::plan_substeps()
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && avec->shape[i] == 0) mass = std::min(mass, avec->rmass[i]);
   MPI_Allreduce(&mass, &w.node_mass, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (bond)
-    for (int t = 1; t <= atom->nbondtypes; t++) {
-      length = std::min(length, bond->rest_length(t));
-      w.k_elo = std::max(w.k_elo, bond->law(t).k_elo);
-    }
-  if (angle)
-    for (int t = 1; t <= atom->nangletypes; t++) w.k_rot = std::max(w.k_rot, angle->k_rot(t));
+  for (int t = 1; bond && t <= atom->nbondtypes; t++) {
+    length = std::min(length, bond->rest_length(t));
+    w.k_elo = std::max(w.k_elo, bond->law(t).k_elo);
+  }
+  for (int t = 1; angle && t <= atom->nangletypes; t++) w.k_rot = std::max(w.k_rot, angle->k_rot(t));
   w.element_length = std::isfinite(length) ? length : 1.0;
   w.k_n = lib->law.k_n;
   w.gamma_contact = std::max(lib->law.gamma_n, lib->law.gamma_t);
@@ -325,8 +289,8 @@ void FixWire::plan_substeps()
   }
 }
 
-/* The contact model lives across runs (it holds the friction memories); a new skin makes
-   a new one that takes the memories over. */
+/* The contact model lives across runs (it holds the friction memories); a new skin makes a
+   new one, which takes the memories over. Default skin: the neighbour skin. */
 void FixWire::make_contact_model()
 {
   if (lib->law.k_n == 0.0) return;
@@ -334,13 +298,15 @@ void FixWire::make_contact_model()
   if (!(skin > 0.0))
     error->all(FLERR, "fix wire: contacts need a skin > 0 for their candidate lists; give 'neighbor "
                "SKIN bin' or fix wire's 'skin S'");
-  std::vector<wire::StoredContact> memories;
-  if (lib->contacts) memories = lib->contacts->memories();
-  memories.insert(memories.end(), lib->restored.begin(), lib->restored.end());
-  lib->restored.clear();
+  std::vector<wire::StoredContact> memories = std::move(lib->restored);
+  if (lib->contacts) {
+    const std::vector<wire::StoredContact> kept = lib->contacts->memories();
+    memories.insert(memories.end(), kept.begin(), kept.end());
+  }
   lib->contacts = std::make_unique<wire::ContactModel>(lib->law, wire_radius, skin);
   lib->contacts->add_memories(memories);
-  indexed_at = -1;
+  lib->restored.clear();
+  lib->step.contacts = lib->contacts.get();
 }
 
 void FixWire::setup(int /*vflag*/)
@@ -357,10 +323,8 @@ void FixWire::setup(int /*vflag*/)
   diagnostics[DT_SP_STABLE] = stable_dt_sp;
   diagnostics[STEPS_TOO_FAST] = 0.0;
   warned_fast_motion = false;
-  section_time.fill(0.0);
-  fix_time = fix_cpu = node_substeps = 0.0;
-  std::fill(comm_doubles, comm_doubles + 2, 0.0);
-  std::fill(all_atom_doubles, all_atom_doubles + 2, 0.0);
+  timing.fill(0.0);
+  lib->timing = wire::StepTiming();
   substeps_run = 0;
   rebuilds_at_start = lib->contacts ? lib->contacts->rebuilds() : 0;
 }
@@ -372,27 +336,25 @@ void FixWire::reset_dt()
 }
 
 /* The wire's topology on every rank: a contact pair is found on the rank owning the first
-   node of its lower element, and that rank must see the other element whatever rank
-   stores its bond. newton_bond on: each element is in exactly one rank's bond list. */
+   node of its lower element, and that rank must see the other element whatever rank stores
+   its bond. newton_bond on: each element is in exactly one rank's bond list. */
 void FixWire::gather_elements()
 {
   std::vector<std::array<tagint, 2>> mine;
   double longest = 0.0;
-  if (bond)
-    for (int n = 0; n < neighbor->nbondlist; n++) {
-      const int *b = neighbor->bondlist[n];
-      const tagint p = atom->tag[b[0]], q = atom->tag[b[1]];
-      mine.push_back({std::min(p, q), std::max(p, q)});
-      longest = std::max({longest, bond->rest_length(b[2]), (vec3(atom->x[b[0]]) - vec3(atom->x[b[1]])).norm()});
-    }
+  for (int n = 0; bond && n < neighbor->nbondlist; n++) {
+    const int *b = neighbor->bondlist[n];
+    const tagint p = atom->tag[b[0]], q = atom->tag[b[1]];
+    mine.push_back({std::min(p, q), std::max(p, q)});
+    longest = std::max({longest, bond->rest_length(b[2]), (vec3(atom->x[b[0]]) - vec3(atom->x[b[1]])).norm()});
+  }
   MPI_Allreduce(&longest, &longest_element, 1, MPI_DOUBLE, MPI_MAX, world);
   elements = gather_records(mine, world, true);
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
-  if (!lib->contacts) return;
   std::vector<std::array<std::int64_t, 2>> all;
   for (const auto &e : elements) all.push_back({e[0], e[1]});
-  lib->contacts->set_elements(std::move(all));
+  if (lib->contacts) lib->contacts->set_elements(std::move(all));
 }
 
 /* The rank computing a contact (owner of the first node of the lower element) must hold as
@@ -402,8 +364,7 @@ void FixWire::gather_elements()
 void FixWire::check_ghost_cutoff()
 {
   const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-  if (!periodic && comm->nprocs == 1) return;
-  if (elements.empty() || !lib->contacts) return;    // no contacts: LAMMPS checks the bonds
+  if ((!periodic && comm->nprocs == 1) || elements.empty() || !lib->contacts) return;
   double reach = 0.0, largest_grain;
   for (int i = 0; i < atom->nlocal; i++)
     if (avec->shape[i] != 0) reach = std::max(reach, avec->radius[i]);
@@ -420,14 +381,13 @@ void FixWire::check_ghost_cutoff()
 
 void FixWire::rescale_states(double new_dt)
 {
-  if (state_dt > 0.0 && state_dt != new_dt)
-    for (int i = 0; i < atom->nlocal; i++) {
-      if (gear[i][kGearColumns - 1] == 0.0) continue;
-      wire::Gear5State s;
-      s.unpack(gear[i]);
-      wire::gear5_change_step(s, state_dt, new_dt);
-      s.pack(gear[i]);
-    }
+  for (int i = 0; i < atom->nlocal && state_dt > 0.0 && state_dt != new_dt; i++) {
+    if (gear[i][kGearColumns - 1] == 0.0) continue;
+    wire::Gear5State s;
+    s.unpack(gear[i]);
+    wire::gear5_change_step(s, state_dt, new_dt);
+    s.pack(gear[i]);
+  }
   state_dt = new_dt;
 }
 
@@ -437,66 +397,52 @@ void FixWire::post_force(int /*vflag*/)
 {
   const double wall_start = platform::walltime(), cpu_start = platform::cputime();
   const bool reindexed = neighbor->lastcall != indexed_at;
-  if (reindexed) {
-    index_atoms();
-    index_topology();
-  }
+  if (reindexed) index_atoms();
   load_nodes();
   measure_external_forces();
   if (lib->contacts) update_scene(reindexed);
-  else lib->reactions.reset((int) lib->boundaries.size());
+  else lib->step.reactions.reset((int) lib->boundaries.size());
   if (lib->contacts && reindexed) hand_over_memories();
-  double callback_time = 0.0;
-  const double subcycle_start = platform::walltime();
   try {
-    wire::run_subcycle(lib->plan, lib->corrector, lib->nodes, lib->reactions,
-        [&](const wire::SubstepInfo &info, const std::vector<Vec3> &, const std::vector<Vec3> &,
-            std::vector<Vec3> &, wire::GrainForceAccumulator &) {
-          const double t0 = platform::walltime();
-          substep_forces(info.index, info.time, info.dt);
-          callback_time += platform::walltime() - t0;
-        });
+    const wire::StepTotals t = lib->step.run(lib->plan, lib->corrector, *lib, lib->timing);
+    diagnostics[E_AXIAL] = t.elastic.axial;
+    diagnostics[E_BENDING] = t.elastic.bending;
+    diagnostics[E_CONTACT] = t.contacts.energy;
+    diagnostics[N_WIRE_WIRE] = t.contacts.wire_wire;
+    diagnostics[N_WIRE_GRAIN] = t.contacts.wire_grain;
+    diagnostics[N_WIRE_BOUNDARY] = t.contacts.wire_boundary;
   } catch (std::exception &e) {
     error->one(FLERR, "fix wire: step {}: {}", update->ntimestep, e.what());
   }
-  section_time[S_INTEGRATION] += platform::walltime() - subcycle_start - callback_time;
   check_motion_within_skin();
   store_nodes();
   hand_forces_to_grains();
   hand_forces_to_boundaries();
   sum_diagnostics_over_ranks();
   substeps_run += lib->plan.substeps;
-  fix_time += platform::walltime() - wall_start;
-  fix_cpu += platform::cputime() - cpu_start;
+  timing[T_TOTAL] += platform::walltime() - wall_start;
+  timing[T_CPU] += platform::cputime() - cpu_start;
 }
 
-/* Node and grain indices of the local atoms (owned first, so the owned nodes come first). */
+/* After a neighbour build: node and grain indices of the local atoms (owned nodes first,
+   each part in the order of atom IDs, so the nodes of a wire numbered along it lie side by
+   side in memory) and this rank's elements and joints in node indices, each with the law
+   of its bond and angle type. */
 void FixWire::index_atoms()
 {
   const int ntotal = atom->nlocal + atom->nghost;
   node_of_atom.assign(ntotal, -1);
-  grain_of_atom.assign(ntotal, -1);
   atom_of_node.clear();
   atom_of_grain.clear();
-  owned_nodes = 0;
-  for (int i = 0; i < ntotal; i++) {
-    if (avec->shape[i] == 0) {
-      node_of_atom[i] = (int) atom_of_node.size();
-      atom_of_node.push_back(i);
-      owned_nodes += i < atom->nlocal;
-    } else {
-      grain_of_atom[i] = (int) atom_of_grain.size();
-      atom_of_grain.push_back(i);
-    }
-  }
+  for (int i = 0; i < ntotal; i++) (avec->shape[i] == 0 ? atom_of_node : atom_of_grain).push_back(i);
+  owned_nodes = (int) (std::lower_bound(atom_of_node.begin(), atom_of_node.end(), atom->nlocal) - atom_of_node.begin());
+  auto by_tag = [&](int i, int j) { return atom->tag[i] < atom->tag[j]; };
+  std::sort(atom_of_node.begin(), atom_of_node.begin() + owned_nodes, by_tag);
+  std::sort(atom_of_node.begin() + owned_nodes, atom_of_node.end(), by_tag);
+  for (size_t k = 0; k < atom_of_node.size(); k++) node_of_atom[atom_of_node[k]] = (int) k;
   indexed_at = neighbor->lastcall;
-}
 
-/* This rank's elements and joints (LAMMPS' bond and angle lists) in node indices, each with
-   the law of its type from bond_style and angle_style wire. */
-void FixWire::index_topology()
-{
-  wire::WireTopology &t = lib->topology;
+  wire::WireTopology &t = lib->step.topology;
   t.elements.clear();
   t.joints.clear();
   auto node = [&](int i) {
@@ -505,16 +451,16 @@ void FixWire::index_topology()
                  "elements and joints join wire nodes (shape 0) only", atom->tag[i]);
     return node_of_atom[i];
   };
-  if (bond)
-    for (int n = 0; n < neighbor->nbondlist; n++) {
-      const int *b = neighbor->bondlist[n];
-      t.elements.push_back({node(b[0]), node(b[1]), bond->rest_length(b[2]), bond->law(b[2])});
-    }
-  if (angle)
-    for (int n = 0; n < neighbor->nanglelist; n++) {
-      const int *a = neighbor->anglelist[n];
-      t.joints.push_back({node(a[0]), node(a[1]), node(a[2]), angle->k_rot(a[3])});
-    }
+  for (int n = 0; bond && n < neighbor->nbondlist; n++) {
+    const int *b = neighbor->bondlist[n];
+    t.elements.push_back({node(b[0]), node(b[1]), bond->rest_length(b[2]), bond->law(b[2])});
+  }
+  for (int n = 0; angle && n < neighbor->nanglelist; n++) {
+    const int *a = neighbor->anglelist[n];
+    t.joints.push_back({node(a[0]), node(a[1]), node(a[2]), angle->k_rot(a[3])});
+  }
+  std::sort(t.elements.begin(), t.elements.end(), [](const auto &p, const auto &q) { return p.a < q.a; });
+  std::sort(t.joints.begin(), t.joints.end(), [](const auto &p, const auto &q) { return p.b < q.b; });
 }
 
 /* The owned nodes' Gear states from the per-atom array, with position and velocity taken
@@ -522,16 +468,15 @@ void FixWire::index_topology()
    anchors: held where they are. */
 void FixWire::load_nodes()
 {
-  wire::WireNodeSet &nodes = lib->nodes;
-  const int n = owned_nodes;
+  wire::WireNodeSet &nodes = lib->step.nodes;
   const double dt = lib->plan.dt_sp;
-  nodes.state.resize(n);
-  nodes.mass.resize(n);
-  nodes.fixed.resize(n);
-  nodes.copies = (int) atom_of_node.size() - n;
+  nodes.state.resize(owned_nodes);
+  nodes.mass.resize(owned_nodes);
+  nodes.fixed.resize(owned_nodes);
+  nodes.copies = (int) atom_of_node.size() - owned_nodes;
   nodes.dt = dt;
-  lib->step_start.resize(n);
-  for (int k = 0; k < n; k++) {
+  lib->step_start.resize(owned_nodes);
+  for (int k = 0; k < owned_nodes; k++) {
     const int i = atom_of_node[k];
     wire::Gear5State &s = nodes.state[k];
     if (gear[i][kGearColumns - 1] != 0.0) s.unpack(gear[i]);
@@ -546,7 +491,7 @@ void FixWire::load_nodes()
 
 void FixWire::store_nodes()
 {
-  const wire::WireNodeSet &nodes = lib->nodes;
+  const wire::WireNodeSet &nodes = lib->step.nodes;
   for (int k = 0; k < owned_nodes; k++) {
     if (nodes.fixed[k]) continue;
     const int i = atom_of_node[k];
@@ -563,23 +508,23 @@ void FixWire::store_nodes()
    kernels at the same positions, so the difference is exact up to the order of summation. */
 void FixWire::measure_external_forces()
 {
-  wire::WireNodeSet &nodes = lib->nodes;
-  for (size_t k = 0; k < atom_of_node.size(); k++) nodes.positions[k] = vec3(atom->x[atom_of_node[k]]);
-  std::fill(nodes.forces.begin(), nodes.forces.end(), Vec3::Zero());
+  wire::WireStep &step = lib->step;
+  for (size_t k = 0; k < atom_of_node.size(); k++) step.nodes.positions[k] = vec3(atom->x[atom_of_node[k]]);
   try {
-    wire::add_elastic_forces(lib->topology, nodes.positions, nodes.forces);
+    step.elastic_forces_now();
   } catch (std::exception &e) {
     error->one(FLERR, "fix wire: step {}: {}", update->ntimestep, e.what());
   }
   communicate(Comm::node_force, true);
-  lib->external.resize(owned_nodes);
-  for (int k = 0; k < owned_nodes; k++) lib->external[k] = vec3(atom->f[atom_of_node[k]]) - nodes.forces[k];
+  step.external.resize(owned_nodes);
+  for (int k = 0; k < owned_nodes; k++) step.external[k] = vec3(atom->f[atom_of_node[k]]) - step.nodes.forces[k];
+  step.damping = node_damping;
 }
 
-/* The contact model's scene of this step: after a new neighbour build the node ids, the
-   copies of the elements (each element whose first node or an image of it is here, with
-   the image of its second node closest to it), the grains and which nodes may touch which
-   boundary; every step the grains' poses and velocities and the boundaries' speeds. */
+/* The contact model's scene of the step. After a neighbour build: the node ids, which nodes
+   may touch which boundary, and the copies of the elements (each element whose first node,
+   or an image of it, is here, with the image of its second node closest to it); every step
+   the grains' poses and velocities and the boundaries' speeds. */
 void FixWire::update_scene(bool reindexed)
 {
   wire::ContactScene scene = lib->contacts->take_scene();
@@ -596,135 +541,90 @@ void FixWire::update_scene(bool reindexed)
       const std::array<tagint, 2> from{atom->tag[i], 0}, to{atom->tag[i], MAXTAGINT};
       for (auto e = std::lower_bound(elements.begin(), elements.end(), from); e != elements.end() && *e <= to; ++e) {
         const int j = domain->closest_image(i, atom->map((*e)[1]));
-        if (j < 0 || node_of_atom[j] < 0) {
-          if (i < atom->nlocal)
-            error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node "
-                       "ID {}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
-          continue;
-        }
-        scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
+        if ((j < 0 || node_of_atom[j] < 0) && i < atom->nlocal)
+          error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node "
+                     "ID {}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
+        if (j >= 0 && node_of_atom[j] >= 0) scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
       }
     }
-    scene.grains.resize(atom_of_grain.size());
   }
   if (!atom_of_grain.empty()) communicate(Comm::grain_velocity, false);    // ghost grains' v and omega
+  scene.grains.resize(atom_of_grain.size());
   for (size_t g = 0; g < atom_of_grain.size(); g++) {
     const int i = atom_of_grain[g];
-    wire::GrainCopy &c = scene.grains[g];
-    c.id = atom->tag[i];
-    c.shape = &avec->shape_of(i);
-    c.pose = avec->pose(i);
-    c.velocity = vec3(atom->v[i]);
-    c.angular_velocity = vec3(avec->omega[i]);
+    scene.grains[g] = {atom->tag[i], &avec->shape_of(i), avec->pose(i), vec3(atom->v[i]), vec3(avec->omega[i])};
   }
   scene.boundaries.clear();
   for (BoundaryView &b : lib->boundaries) {
     b.link.speed = b.boundary->surface_velocity().norm();
     scene.boundaries.push_back(b.link);
   }
-  lib->reactions.reset((int) (scene.grains.size() + scene.boundaries.size()));
+  lib->step.reactions.reset((int) (scene.grains.size() + scene.boundaries.size()));
   lib->contacts->begin_step(std::move(scene), update->dt, reindexed);
 }
 
 /* After atoms moved between ranks, each contact memory goes to the rank that now computes
    its contact: the owner of the key's first node. Only the memories whose node left travel
-   (one gather over the ranks), and only on steps with a new neighbour build. */
+   (one gather over the ranks). After read_restart every rank holds all: each keeps its own. */
 void FixWire::hand_over_memories()
 {
   auto owned_here = [&](std::int64_t t) {
     const int i = atom->map((tagint) t);
     return i >= 0 && i < atom->nlocal;
   };
-  // After read_restart every rank holds every memory: keep the own ones.
   const bool send = comm->nprocs > 1 && !memories_on_every_rank;
   const std::vector<wire::StoredContact> leaving = lib->contacts->take_memories_unless(owned_here);
   memories_on_every_rank = false;
   if (!send) return;
-  std::vector<StoredRecord> mine;
-  for (const wire::StoredContact &c : leaving) mine.push_back(record_of(c));
   std::vector<wire::StoredContact> arriving;
-  for (const StoredRecord &r : gather_records(mine, world, true))
-    if (owned_here((std::int64_t) r.key[0])) arriving.push_back(contact_of(r));
+  for (const wire::StoredContact &c : gather_records(leaving, world, true))
+    if (owned_here(c.key[0])) arriving.push_back(c);
   lib->contacts->add_memories(arriving);
 }
 
-/* One substep: ghost copies of the nodes, the elastic and contact forces, the ghosts'
-   forces summed into their owners, the external force and the drag. */
-void FixWire::substep_forces(int /*substep*/, double tau, double dt)
-{
-  wire::WireNodeSet &nodes = lib->nodes;
-  in_subcycle = true;
-  communicate(Comm::node_state, false);
-  double t0 = platform::walltime();
-  const wire::ElasticEnergy elastic = wire::add_elastic_forces(lib->topology, nodes.positions, nodes.forces);
-  double t1 = platform::walltime();
-  section_time[S_ELASTIC] += t1 - t0;
-  if (lib->contacts) {
-    const wire::ContactTotals c = lib->contacts->add_forces(nodes.positions, nodes.velocities, tau, dt,
-                                                            nodes.forces, lib->reactions);
-    diagnostics[E_CONTACT] = c.energy;
-    diagnostics[N_WIRE_WIRE] = c.wire_wire;
-    diagnostics[N_WIRE_GRAIN] = c.wire_grain;
-    diagnostics[N_WIRE_BOUNDARY] = c.wire_boundary;
-    section_time[S_CONTACTS] += platform::walltime() - t1;
-  }
-  communicate(Comm::node_force, true);
-  in_subcycle = false;
-  for (int k = 0; k < owned_nodes; k++)
-    nodes.forces[k] += lib->external[k] - node_damping * nodes.velocities[k];
-  diagnostics[E_AXIAL] = elastic.axial;
-  diagnostics[E_BENDING] = elastic.bending;
-  node_substeps += owned_nodes;
-}
-
-/* Contacts are looked for among bodies within the skin of touching, and the lists are
-   rebuilt within the step when something moved too far (lib/wire/contact_model.h); but
-   only atoms within the ghost cutoff are there to be found. A pair closing by more than
-   the neighbour skin within one step may lie beyond it: count such steps (output 13) and
-   warn once per run. Closing speed bound: the largest node displacement of the step plus
-   the larger of it and the largest grain motion. */
+/* The subcycle rebuilds its candidate lists when something moved too far
+   (lib/wire/contact_model.h), but only atoms within the ghost cutoff are there to be found:
+   a pair closing by more than the neighbour skin in a step may lie beyond it. Such steps
+   are counted (output 13) and warned about once per run. Closing bound: the largest node
+   displacement of the step plus the larger of it and the largest grain motion. */
 void FixWire::check_motion_within_skin()
 {
-  if (!lib->contacts) return;    // no contacts to miss
+  if (!lib->contacts) return;
   double largest[2] = {0.0, 0.0};    // node, grain
-  for (int k = 0; k < owned_nodes; k++)
-    largest[0] = std::max(largest[0], (lib->nodes.state[k].position() - lib->step_start[k]).norm());
+  largest[0] = lib->step.largest_displacement(lib->step_start);
   for (int j = 0; j < atom->nlocal; j++)
     if (avec->shape[j] != 0)
       largest[1] = std::max(largest[1], (vec3(atom->v[j]).norm() + vec3(avec->omega[j]).norm() * avec->radius[j]) * update->dt);
   MPI_Allreduce(MPI_IN_PLACE, largest, 2, MPI_DOUBLE, MPI_MAX, world);
-  if (largest[0] + std::max(largest[0], largest[1]) <= neighbor->skin) return;
+  const double closing = largest[0] + std::max(largest[0], largest[1]);
+  if (closing <= neighbor->skin) return;
   diagnostics[STEPS_TOO_FAST] += 1.0;
-  if (warned_fast_motion) return;
-  warned_fast_motion = true;
-  if (comm->me == 0)
+  if (!warned_fast_motion && comm->me == 0)
     error->warning(FLERR, "fix wire: at step {} a wire node moved {:.4g} and a grain {:.4g} in one step, "
                    "closing by more than the neighbour skin {:.4g}: contacts with atoms beyond the ghost "
                    "cutoff can be missed (output 13 counts such steps). Use a smaller timestep or a larger "
                    "skin ('neighbor {:.4g} bin')", update->ntimestep, largest[0], largest[1], neighbor->skin,
-                   2.0 * (largest[0] + std::max(largest[0], largest[1])));
+                   2.0 * closing);
+  warned_fast_motion = true;
 }
 
 /* Mean wire->grain force and torque over the substeps, added to the owners' f and torque
    (ghost grains' shares summed onto their owners first). */
 void FixWire::hand_forces_to_grains()
 {
-  const int ntotal = atom->nlocal + atom->nghost;
-  grain_force_buffer.assign(6 * (size_t) ntotal, 0.0);
-  Vec3 total = Vec3::Zero();
   const int grains = lib->contacts ? (int) atom_of_grain.size() : 0;
+  grain_force_buffer.assign(6 * (size_t) (atom->nlocal + atom->nghost), 0.0);
+  double total[3] = {0.0, 0.0, 0.0};
   for (int g = 0; g < grains; g++) {
     double *b = &grain_force_buffer[6 * (size_t) atom_of_grain[g]];
-    const Vec3 force = lib->reactions.mean_force(g);
-    store(force, b);
-    store(lib->reactions.mean_torque(g), b + 3);
-    total += force;
+    store(lib->step.reactions.mean_force(g), b);
+    store(lib->step.reactions.mean_torque(g), b + 3);
+    for (int d = 0; d < 3; d++) total[d] += b[d];
   }
-  double mine[3] = {total.x(), total.y(), total.z()}, all[3];
-  MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, world);
-  for (int d = 0; d < 3; d++) diagnostics[GRAIN_FX + d] = all[d];
-  if (grains > 0) communicate(Comm::grain_force, true);
-  for (int i = 0; i < atom->nlocal && grains > 0; i++) {
+  MPI_Allreduce(total, &diagnostics[GRAIN_FX], 3, MPI_DOUBLE, MPI_SUM, world);
+  if (grains == 0) return;
+  communicate(Comm::grain_force, true);
+  for (int i = 0; i < atom->nlocal; i++) {
     if (avec->shape[i] == 0) continue;
     add_to(atom->f[i], vec3(&grain_force_buffer[6 * (size_t) i]));
     add_to(avec->torque[i], vec3(&grain_force_buffer[6 * (size_t) i + 3]));
@@ -737,9 +637,9 @@ void FixWire::hand_forces_to_boundaries()
 {
   const size_t n = lib->boundaries.size();
   if (n == 0) return;
-  const int first = lib->reactions.num_grains() - (int) n;
+  const int first = lib->step.reactions.num_grains() - (int) n;
   std::vector<double> mine(3 * n), all(3 * n);
-  for (size_t k = 0; k < n; k++) store(lib->reactions.mean_force(first + (int) k), &mine[3 * k]);
+  for (size_t k = 0; k < n; k++) store(lib->step.reactions.mean_force(first + (int) k), &mine[3 * k]);
   MPI_Allreduce(mine.data(), all.data(), (int) all.size(), MPI_DOUBLE, MPI_SUM, world);
   for (size_t k = 0; k < n; k++) lib->boundaries[k].boundary->take_wire_force(vec3(&all[3 * k]), update->ntimestep);
 }
@@ -747,10 +647,10 @@ void FixWire::hand_forces_to_boundaries()
 /* Energies and contact counts of the last substep, summed over the ranks. */
 void FixWire::sum_diagnostics_over_ranks()
 {
-  double sums[6] = {diagnostics[E_AXIAL], diagnostics[E_BENDING], diagnostics[E_CONTACT],
-                    diagnostics[N_WIRE_WIRE], diagnostics[N_WIRE_GRAIN], diagnostics[N_WIRE_BOUNDARY]};
-  MPI_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, world);
   const int index[6] = {E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, N_WIRE_BOUNDARY};
+  double sums[6];
+  for (int k = 0; k < 6; k++) sums[k] = diagnostics[index[k]];
+  MPI_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, world);
   for (int k = 0; k < 6; k++) diagnostics[index[k]] = sums[k];
 }
 
@@ -759,135 +659,145 @@ double FixWire::compute_vector(int n)
   return diagnostics[n];
 }
 
-/* fix wire's share of the run, printed after it: time per node per substep, the split
-   over contacts, elastic forces, integration and communication, and the bytes sent per
-   substep. */
+/* fix wire's share of the run, printed after it: time per node per substep, its split over
+   contacts, elastic forces, integration and communication, and the bytes sent per substep. */
 void FixWire::post_run()
 {
   if (substeps_run == 0) return;
-  double sum[N_SECTIONS + 5], local[N_SECTIONS + 5], largest;
-  std::copy(section_time.begin(), section_time.end(), local);
-  local[N_SECTIONS] = fix_cpu;
-  local[N_SECTIONS + 1] = node_substeps;
-  local[N_SECTIONS + 2] = comm_doubles[0] + comm_doubles[1];
-  local[N_SECTIONS + 3] = all_atom_doubles[0] + all_atom_doubles[1];
-  local[N_SECTIONS + 4] = fix_time;
-  MPI_Allreduce(local, sum, N_SECTIONS + 5, MPI_DOUBLE, MPI_SUM, world);
-  MPI_Allreduce(&fix_time, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+  timing[T_CONTACTS] = lib->timing.contacts;
+  timing[T_ELASTIC] = lib->timing.elastic;
+  timing[T_INTEGRATION] = lib->timing.integration;
+  timing[T_COMM] = lib->timing.exchange + timing[T_COMM_STEP];
+  timing[T_NODE_SUBSTEPS] = lib->timing.node_substeps;
+  std::array<double, N_TIMING> sum;
+  MPI_Allreduce(timing.data(), sum.data(), N_TIMING, MPI_DOUBLE, MPI_SUM, world);
+  double slowest;
+  MPI_Allreduce(&timing[T_TOTAL], &slowest, 1, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me != 0) return;
-  const double loop = timer->get_wall(Timer::TOTAL), total = sum[N_SECTIONS + 4];
-  const double per = sum[N_SECTIONS + 1] > 0.0 ? 1e9 / sum[N_SECTIONS + 1] : 0.0;
-  const double other = total - std::accumulate(sum, sum + N_SECTIONS, 0.0);
-  const int builds = lib->contacts ? lib->contacts->rebuilds() - rebuilds_at_start : 0;
+  const double loop = timer->get_wall(Timer::TOTAL), total = sum[T_TOTAL];
+  const double per = sum[T_NODE_SUBSTEPS] > 0.0 ? 1e9 / sum[T_NODE_SUBSTEPS] : 0.0;
   auto share = [&](double t) { return total > 0.0 ? 100.0 * t / total : 0.0; };
-  utils::logmesg(lmp, "fix wire {}: {:.4g} s of {:.4g} s loop time ({:.3g} %, slowest rank), {} substeps, "
-                 "{:.0f} nodes\n", id, largest, loop, loop > 0.0 ? 100.0 * largest / loop : 0.0, substeps_run,
-                 sum[N_SECTIONS + 1] / substeps_run);
-  utils::logmesg(lmp, "fix wire {}: {:.4g} ns per node per substep (time summed over ranks; cpu {:.4g} ns)\n", id,
-                 total * per, sum[N_SECTIONS] * per);
-  utils::logmesg(lmp, "fix wire {}: contacts {:.3g} %, elastic forces {:.3g} %, integration {:.3g} %, "
-                 "communication {:.3g} %, step setup and hand-over {:.3g} %; {} contact list builds, {} "
-                 "candidate pairs on rank 0\n", id, share(sum[S_CONTACTS]), share(sum[S_ELASTIC]),
-                 share(sum[S_INTEGRATION]), share(sum[S_COMM]), share(other), builds,
-                 lib->contacts ? lib->contacts->candidates() : 0);
-  utils::logmesg(lmp, "fix wire {}: communication per substep (all ranks): {:.0f} bytes of wire nodes; "
-                 "{:.0f} bytes for 6 + 3 doubles per ghost atom of any kind\n", id,
-                 8.0 * sum[N_SECTIONS + 2] / substeps_run, 8.0 * sum[N_SECTIONS + 3] / substeps_run);
+  const double other = total - sum[T_CONTACTS] - sum[T_ELASTIC] - sum[T_INTEGRATION] - sum[T_COMM];
+  std::string text = fmt::format(
+      "fix wire {0}: {1:.4g} s of {2:.4g} s loop time ({3:.3g} %, slowest rank), {4} substeps, {5:.0f} nodes\n"
+      "fix wire {0}: {6:.4g} ns per node per substep (time summed over ranks; cpu {7:.4g} ns)\n"
+      "fix wire {0}: contacts {8:.3g} %, elastic forces {9:.3g} %, integration {10:.3g} %, communication "
+      "{11:.3g} %, step setup and hand-over {12:.3g} %\n"
+      "fix wire {0}: communication per substep (all ranks): {13:.0f} bytes of wire nodes; {14:.0f} bytes "
+      "for 6 + 3 doubles per ghost atom of any kind\n",
+      id, slowest, loop, loop > 0.0 ? 100.0 * slowest / loop : 0.0, substeps_run, sum[T_NODE_SUBSTEPS] / substeps_run,
+      total * per, sum[T_CPU] * per, share(sum[T_CONTACTS]), share(sum[T_ELASTIC]), share(sum[T_INTEGRATION]),
+      share(sum[T_COMM]), share(other), 8.0 * sum[T_SENT] / substeps_run, 8.0 * sum[T_SENT_ALL_ATOMS] / substeps_run);
+  if (lib->contacts) {
+    const wire::ContactModel &c = *lib->contacts;
+    text += fmt::format("fix wire {}: rank 0: {} contact list builds, {} candidate pairs, {:.4g} % of {} "
+                        "element-grain evaluations from the tracked feature\n", id, c.rebuilds() - rebuilds_at_start,
+                        c.candidates(), 100.0 * c.grain_evaluations_from_hint() / std::max(1LL, c.grain_evaluations()),
+                        c.grain_evaluations());
+  }
+  utils::logmesg(lmp, text);
 }
 
 /* ---------------------------------------------------------------------- comm */
 
-void FixWire::communicate(Comm mode, bool reverse)
+/* counted: the subcycle's (timed by lib/wire, counted here), else once per step. */
+void FixWire::communicate(Comm mode, bool reverse, bool counted)
 {
   const double t0 = platform::walltime();
   comm_mode = mode;
+  counting_comm = counted;
   if (reverse) comm->reverse_comm(this, mode == Comm::grain_force ? 6 : 3);
   else comm->forward_comm(this, mode == Comm::node_position ? 3 : 6);
-  section_time[S_COMM] += platform::walltime() - t0;
+  counting_comm = false;
+  if (!counted) timing[T_COMM_STEP] += platform::walltime() - t0;
 }
 
-/* Each mode sends data of the wire nodes only, or of the grains only: both sides know from
-   the shape which atoms those are. */
+/* What the current mode sends of atom i: up to two vectors of 3 doubles, none for atoms of
+   the other kind. Each mode sends wire nodes only or grains only: both sides know from the
+   shape which atoms those are. The first vector of a node position mode is shifted across
+   periodic boundaries. */
+int FixWire::comm_fields(int i, double *field[2])
+{
+  const bool grain = avec->shape[i] != 0;
+  const int node = grain ? -1 : node_of_atom[i];
+  switch (comm_mode) {
+    case Comm::node_state:
+      if (grain) return 0;
+      field[0] = lib->step.nodes.positions[node].data();
+      field[1] = lib->step.nodes.velocities[node].data();
+      return 2;
+    case Comm::node_position:
+      if (grain) return 0;
+      field[0] = atom->x[i];
+      return 1;
+    case Comm::node_force:
+      if (grain) return 0;
+      field[0] = lib->step.nodes.forces[node].data();
+      return 1;
+    case Comm::grain_velocity:
+      if (!grain) return 0;
+      field[0] = atom->v[i];
+      field[1] = avec->omega[i];
+      return 2;
+    case Comm::grain_force:
+      if (!grain) return 0;
+      field[0] = &grain_force_buffer[6 * (size_t) i];
+      field[1] = field[0] + 3;
+      return 2;
+  }
+  return 0;
+}
+
 int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
-  const bool grains = comm_mode == Comm::grain_velocity;
   double shift[3] = {0.0, 0.0, 0.0};
-  if (pbc_flag) {
-    shift[0] = pbc[0] * domain->xprd;
-    shift[1] = pbc[1] * domain->yprd;
+  if (pbc_flag && comm_mode != Comm::grain_velocity) {
+    shift[0] = pbc[0] * domain->xprd + (domain->triclinic ? pbc[5] * domain->xy + pbc[4] * domain->xz : 0.0);
+    shift[1] = pbc[1] * domain->yprd + (domain->triclinic ? pbc[3] * domain->yz : 0.0);
     shift[2] = pbc[2] * domain->zprd;
-    if (domain->triclinic) {
-      shift[0] += pbc[5] * domain->xy + pbc[4] * domain->xz;
-      shift[1] += pbc[3] * domain->yz;
-    }
   }
   int m = 0;
-  for (int k = 0; k < n; k++) {
-    const int j = list[k];
-    if ((avec->shape[j] != 0) != grains) continue;
-    if (grains) {
-      for (int d = 0; d < 3; d++) buf[m++] = atom->v[j][d];
-      for (int d = 0; d < 3; d++) buf[m++] = avec->omega[j][d];
-    } else if (comm_mode == Comm::node_position) {
-      for (int d = 0; d < 3; d++) buf[m++] = atom->x[j][d] + shift[d];
-    } else {
-      const int node = node_of_atom[j];
-      for (int d = 0; d < 3; d++) buf[m++] = lib->nodes.positions[node][d] + shift[d];
-      for (int d = 0; d < 3; d++) buf[m++] = lib->nodes.velocities[node][d];
-    }
-  }
-  if (comm_mode == Comm::node_state) {
-    comm_doubles[0] += m;
-    all_atom_doubles[0] += 6.0 * n;
+  double *field[2];
+  for (int k = 0; k < n; k++)
+    for (int f = 0, fields = comm_fields(list[k], field); f < fields; f++)
+      for (int d = 0; d < 3; d++) buf[m++] = field[f][d] + (f == 0 ? shift[d] : 0.0);
+  if (counting_comm) {    // the subcycle's: counted for post_run()
+    timing[T_SENT] += m;
+    timing[T_SENT_ALL_ATOMS] += 6.0 * n;
   }
   return m;
 }
 
 void FixWire::unpack_forward_comm(int n, int first, double *buf)
 {
-  const bool grains = comm_mode == Comm::grain_velocity;
   int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if ((avec->shape[i] != 0) != grains) continue;
-    if (grains) {
-      for (int d = 0; d < 3; d++) atom->v[i][d] = buf[m++];
-      for (int d = 0; d < 3; d++) avec->omega[i][d] = buf[m++];
-    } else if (comm_mode == Comm::node_position) {
-      for (int d = 0; d < 3; d++) atom->x[i][d] = buf[m++];
-    } else {
-      const int node = node_of_atom[i];
-      for (int d = 0; d < 3; d++) lib->nodes.positions[node][d] = buf[m++];
-      for (int d = 0; d < 3; d++) lib->nodes.velocities[node][d] = buf[m++];
-    }
-  }
+  double *field[2];
+  for (int i = first; i < first + n; i++)
+    for (int f = 0, fields = comm_fields(i, field); f < fields; f++)
+      for (int d = 0; d < 3; d++) field[f][d] = buf[m++];
 }
 
 int FixWire::pack_reverse_comm(int n, int first, double *buf)
 {
-  const bool grains = comm_mode == Comm::grain_force;
   int m = 0;
-  for (int i = first; i < first + n; i++) {
-    if ((avec->shape[i] != 0) != grains) continue;
-    if (grains) for (int d = 0; d < 6; d++) buf[m++] = grain_force_buffer[6 * (size_t) i + d];
-    else for (int d = 0; d < 3; d++) buf[m++] = lib->nodes.forces[node_of_atom[i]][d];
-  }
-  if (comm_mode == Comm::node_force && in_subcycle) {
-    comm_doubles[1] += m;
-    all_atom_doubles[1] += 3.0 * n;
+  double *field[2];
+  for (int i = first; i < first + n; i++)
+    for (int f = 0, fields = comm_fields(i, field); f < fields; f++)
+      for (int d = 0; d < 3; d++) buf[m++] = field[f][d];
+  if (counting_comm) {
+    timing[T_SENT] += m;
+    timing[T_SENT_ALL_ATOMS] += 3.0 * n;
   }
   return m;
 }
 
 void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  const bool grains = comm_mode == Comm::grain_force;
   int m = 0;
-  for (int k = 0; k < n; k++) {
-    const int j = list[k];
-    if ((avec->shape[j] != 0) != grains) continue;
-    if (grains) for (int d = 0; d < 6; d++) grain_force_buffer[6 * (size_t) j + d] += buf[m++];
-    else for (int d = 0; d < 3; d++) lib->nodes.forces[node_of_atom[j]][d] += buf[m++];
-  }
+  double *field[2];
+  for (int k = 0; k < n; k++)
+    for (int f = 0, fields = comm_fields(list[k], field); f < fields; f++)
+      for (int d = 0; d < 3; d++) field[f][d] += buf[m++];
 }
 
 /* ---------------------------------------------------------------------- per-atom state */
@@ -945,21 +855,20 @@ int FixWire::maxsize_restart()
 }
 
 /* Global restart: a version number, the step of the stored Gear states and the contact
-   memories of all ranks. */
+   memories of all ranks (wire::StoredContact, plain numbers). */
 void FixWire::write_restart(FILE *fp)
 {
-  std::vector<StoredRecord> mine;
+  std::vector<wire::StoredContact> mine;
   // Read from a restart and no step since: every rank holds them all; write them once.
-  if (lib->contacts && (!memories_on_every_rank || comm->me == 0))
-    for (const wire::StoredContact &c : lib->contacts->memories()) mine.push_back(record_of(c));
-  const std::vector<StoredRecord> all = gather_records(mine, world, false);
-  if (comm->me == 0) {
-    const double header[3] = {kRestartVersion, state_dt, (double) all.size()};
-    const int size = (int) (sizeof(header) + all.size() * sizeof(StoredRecord));
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(header, sizeof(double), 3, fp);
-    fwrite(all.data(), sizeof(StoredRecord), all.size(), fp);
-  }
+  if (!memories_on_every_rank || comm->me == 0)
+    mine = lib->contacts ? lib->contacts->memories() : lib->restored;
+  const std::vector<wire::StoredContact> all = gather_records(mine, world, false);
+  if (comm->me != 0) return;
+  const double header[3] = {kRestartVersion, state_dt, (double) all.size()};
+  const int size = (int) (sizeof(header) + all.size() * sizeof(wire::StoredContact));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(header, sizeof(double), 3, fp);
+  fwrite(all.data(), sizeof(wire::StoredContact), all.size(), fp);
 }
 
 void FixWire::restart(char *buf)
@@ -967,7 +876,7 @@ void FixWire::restart(char *buf)
   // read_restart hands every rank the whole block; hand_over_memories() keeps the own ones.
   double header[3];
   std::memcpy(header, buf, sizeof(double));
-  if (header[0] >= 0.0) {    // before the version number: (dt, count, key + one spring each)
+  if (header[0] >= 0.0) {    // an older block without version: (dt, count, records)
     state_dt = header[0];
     if (comm->me == 0)
       error->warning(FLERR, "fix wire: restart file of an older fix wire: its contacts' friction "
@@ -976,20 +885,16 @@ void FixWire::restart(char *buf)
   }
   std::memcpy(header, buf, sizeof(header));
   state_dt = header[1];
-  std::vector<wire::StoredContact> memories((size_t) header[2]);
-  for (size_t k = 0; k < memories.size(); k++) {
-    StoredRecord r;
-    std::memcpy(&r, buf + sizeof(header) + k * sizeof(StoredRecord), sizeof(StoredRecord));
-    memories[k] = contact_of(r);
-  }
-  lib->restored = std::move(memories);
+  lib->restored.resize((size_t) header[2]);
+  std::memcpy(lib->restored.data(), buf + sizeof(header), lib->restored.size() * sizeof(wire::StoredContact));
   memories_on_every_rank = true;
 }
 
 double FixWire::memory_usage()
 {
-  const double nodes = (double) (lib->nodes.positions.size() * 3 + lib->nodes.state.size() * 2) * sizeof(Vec3);
-  return (double) atom->nmax * kGearColumns * sizeof(double) + nodes +
+  return (double) atom->nmax * kGearColumns * sizeof(double) +
+      (double) lib->step.nodes.positions.size() * 3 * sizeof(Vec3) +
+      (double) lib->step.nodes.state.size() * sizeof(wire::Gear5State) +
       (double) grain_force_buffer.size() * sizeof(double) +
       (lib->contacts ? (double) lib->contacts->candidates() * 256.0 : 0.0);
 }

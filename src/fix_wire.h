@@ -78,9 +78,9 @@ class FixWire : public Fix {
   class AtomVecSpheropolyhedron *avec = nullptr;
   double stable_dt_sp = 0.0;
 
-  // Index of each local atom (owned and ghost) among the wire nodes (-1: a grain) and
-  // among the grains (-1: a node), rebuilt with LAMMPS' neighbour lists.
-  std::vector<int> node_of_atom, grain_of_atom, atom_of_node, atom_of_grain;
+  // Index of each local atom (owned and ghost) among the wire nodes (-1: a grain), the
+  // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.
+  std::vector<int> node_of_atom, atom_of_node, atom_of_grain;
   int owned_nodes = 0;
   bigint indexed_at = -1;       // neighbour build the indices belong to
   bool memories_on_every_rank = false;    // just read from a restart file
@@ -89,19 +89,18 @@ class FixWire : public Fix {
   std::vector<std::array<tagint, 2>> elements;
   double longest_element = 0.0;
 
-  enum class Comm { node_state, node_force, node_position, grain_velocity, grain_force } comm_mode = Comm::node_state;
+  enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force } comm_mode = Comm::node_state;
+  bool counting_comm = false;                // the subcycle's communication: counted
   std::vector<double> grain_force_buffer;    // 6 per local atom
 
   std::array<double, 13> diagnostics{};
   bool warned_fast_motion = false;
 
-  // fix wire's own timing (printed after each run)
-  enum Section { S_CONTACTS, S_ELASTIC, S_INTEGRATION, S_COMM, N_SECTIONS };
-  std::array<double, N_SECTIONS> section_time{};
-  double fix_time = 0.0, fix_cpu = 0.0, node_substeps = 0.0, comm_doubles[2] = {0.0, 0.0},
-         all_atom_doubles[2] = {0.0, 0.0};
+  // fix wire's own timing of the run (printed after it): seconds, node-substeps, doubles sent
+  enum Timing { T_TOTAL, T_CPU, T_CONTACTS, T_ELASTIC, T_INTEGRATION, T_COMM, T_COMM_STEP, T_NODE_SUBSTEPS,
+                T_SENT, T_SENT_ALL_ATOMS, N_TIMING };
+  std::array<double, N_TIMING> timing{};
   bigint substeps_run = 0;
-  bool in_subcycle = false;
   int rebuilds_at_start = 0;
 
   void parse_option(int narg, char **arg, int &iarg);
@@ -110,24 +109,22 @@ class FixWire : public Fix {
   void find_boundaries();
   void plan_substeps();
   void make_contact_model();
-  void check_ghost_cutoff();
-  void check_motion_within_skin();
-  void rescale_states(double new_dt);
   void gather_elements();
+  void check_ghost_cutoff();
+  void rescale_states(double new_dt);
 
   void index_atoms();
-  void index_topology();
   void load_nodes();
   void store_nodes();
   void measure_external_forces();
   void update_scene(bool reindexed);
   void hand_over_memories();
-  void substep_forces(int substep, double tau, double dt);
+  void check_motion_within_skin();
   void hand_forces_to_grains();
   void hand_forces_to_boundaries();
   void sum_diagnostics_over_ranks();
-  void communicate(Comm mode, bool reverse);
-  void print_timing();
+  void communicate(Comm mode, bool reverse, bool counted = false);
+  int comm_fields(int i, double *field[2]);
 };
 
 }    // namespace LAMMPS_NS

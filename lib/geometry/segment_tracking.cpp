@@ -12,6 +12,7 @@
 
 #include "geometry/core_contact.h"
 #include "geometry/feature_key.h"
+#include "geometry/gjk.h"
 #include "geometry/segment_closest.h"
 
 #include <algorithm>
@@ -79,21 +80,17 @@ void add_point(const Vec3 &a, const Vec3 &b, const Vec3 &core_point, const Vec3 
   p.key = key;
 }
 
-// The segment a-b over face f: both ends over the face, or the lower one over it and the
-// other beyond one side plane (then the stretch ends where the segment crosses it).
-bool answer_from_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, double wire_radius,
-                      double activation, BodyAnswer &out)
-{
-  const Spheropolyhedron &shape = features.shape();
-  const Face &face = shape.faces[f];
-  const Scales scale = scales_of(a, b, wire_radius, shape);
-  const double height[2] = {face.normal.dot(a) - face.offset, face.normal.dot(b) - face.offset};
-  if (std::min(height[0], height[1]) <= kNearTouchMargin * scale.length) return false;
+// Signed distances of the segment's two ends beyond each side plane of face f, and which
+// side each end lies beyond (-1: over the face; false: beyond two, or too close to a side
+// plane to tell).
+struct FaceSides {
+  int outside[2] = {-1, -1};
+  double beyond[2] = {0.0, 0.0};    // for that side
+};
 
+bool sides_of(const ShapeFeatures &features, int f, const Vec3 (&end)[2], const Scales &scale, FaceSides &out)
+{
   const ShapeFeatures::FaceInfo &info = features.face(f);
-  const Vec3 end[2] = {a, b};
-  int outside[2] = {-1, -1};    // the side plane each end lies beyond
-  double beyond[2][2] = {};     // for that side: distance of end 0 and end 1
   const double guard = kDecisionMargin * scale.length;
   for (int k = 0; k < info.side_count; ++k) {
     const ShapeFeatures::Side &side = features.side(info.first_side + k);
@@ -101,54 +98,65 @@ bool answer_from_face(const ShapeFeatures &features, int f, const Vec3 &a, const
       const double d = side.outward.dot(end[e]) - side.offset;
       if (std::abs(d - scale.clip) <= guard) return false;
       if (d <= scale.clip) continue;
-      if (outside[e] >= 0) return false;    // beyond two sides: near a corner
-      outside[e] = k;
-      beyond[e][0] = side.outward.dot(a) - side.offset;
-      beyond[e][1] = side.outward.dot(b) - side.offset;
+      if (out.outside[e] >= 0) return false;    // beyond two sides: near a corner
+      out.outside[e] = k;
     }
   }
-  if (outside[0] >= 0 && outside[1] >= 0) return false;
-  // The lower end must lie over the face: then it is the segment's closest point.
-  const int low = height[0] <= height[1] ? 0 : 1;
-  if (outside[low] >= 0 && height[0] != height[1]) return false;
+  return true;
+}
 
-  const std::uint32_t face_key = face_feature(f);
+// The face case of contact_segment_grain for face f (the contact axis is f's normal): the
+// segment clipped by f's side planes, each end over the face or where the segment crosses
+// the side plane it lies beyond. False where round-off could decide otherwise, or where the
+// segment misses the face's prism.
+bool clip_to_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, double wire_radius,
+                  double activation, BodyAnswer &out)
+{
+  const Spheropolyhedron &shape = features.shape();
+  const Face &face = shape.faces[f];
+  const Scales scale = scales_of(a, b, wire_radius, shape);
+  const Vec3 end[2] = {a, b};
+  FaceSides sides;
+  if (!sides_of(features, f, end, scale, sides)) return false;
+  if (sides.outside[0] >= 0 && sides.outside[0] == sides.outside[1]) return false;    // misses the face
+  const ShapeFeatures::FaceInfo &info = features.face(f);
+  const double guard = kDecisionMargin * scale.length;
   Vec3 core_point[2];
-  double core_distance[2];
   std::uint64_t key[2];
   for (int e = 0; e < 2; ++e) {
-    if (outside[e] < 0) {
+    const int k = sides.outside[e];
+    if (k < 0) {
       core_point[e] = end[e];
-      core_distance[e] = height[e];
-      key[e] = make_key(vertex_feature(e), face_key);
+      key[e] = make_key(vertex_feature(e), face_feature(f));
       continue;
     }
-    // Where the segment leaves the face's prism, from the inside end (Sutherland-Hodgman).
-    const int in = 1 - e;
-    const double d_in = beyond[e][in], d_out = beyond[e][e];
-    const double t = std::min(1.0, std::max(0.0, d_in / (d_in - d_out)));
-    core_point[e] = end[in] + t * (end[e] - end[in]);
-    core_distance[e] = face.normal.dot(core_point[e]) - face.offset;
-    // The crossing must lie clearly inside the face's other side planes.
-    for (int k = 0; k < info.side_count; ++k) {
-      if (k == outside[e]) continue;
-      const ShapeFeatures::Side &side = features.side(info.first_side + k);
-      if (side.outward.dot(core_point[e]) - side.offset > scale.clip - guard) return false;
+    // where the segment crosses side plane k (Sutherland-Hodgman's crossing)
+    const ShapeFeatures::Side &side = features.side(info.first_side + k);
+    const double d0 = side.outward.dot(a) - side.offset, d1 = side.outward.dot(b) - side.offset;
+    core_point[e] = a + std::min(1.0, std::max(0.0, d0 / (d0 - d1))) * (b - a);
+    for (int j = 0; j < info.side_count; ++j) {    // inside the face's other side planes
+      if (j == k) continue;
+      const ShapeFeatures::Side &other = features.side(info.first_side + j);
+      if (other.outward.dot(core_point[e]) - other.offset > scale.clip - guard) return false;
     }
-    const int m = static_cast<int>(face.vertices.size()), s = outside[e];
-    key[e] = make_key(edge_feature(0, 1), edge_feature(face.vertices[s], face.vertices[(s + 1) % m]));
+    const int m = info.side_count;
+    key[e] = make_key(edge_feature(0, 1), edge_feature(face.vertices[k], face.vertices[(k + 1) % m]));
   }
   if ((core_point[1] - core_point[0]).norm() <= 4.0 * scale.merge) return false;    // would merge
 
   out = BodyAnswer{};
   out.smallest_gap = INFINITY;
-  const double r = shape.radius;
-  for (int e = 0; e < 2; ++e)
-    add_point(a, b, core_point[e], face.normal, core_distance[e], r, wire_radius, activation, key[e], out);
+  for (int e = 0; e < 2; ++e) {
+    const double height = face.normal.dot(core_point[e]) - face.offset;
+    add_point(a, b, core_point[e], face.normal, height, shape.radius, wire_radius, activation, key[e], out);
+  }
   return true;
 }
 
-// The segment's closest point to edge e lies over the edge's inside, outside both faces.
+// The segment's closest point to edge e lies over the edge's inside and outside both its
+// faces: then it is the closest point to the core. The contact is that point, unless the
+// direction is one of the faces' normals within contact_segment_grain's face alignment:
+// then it is that face's clipped stretch.
 bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const Vec3 &b, double wire_radius,
                       double activation, BodyAnswer &out)
 {
@@ -158,19 +166,43 @@ bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const
   const Vec3 &v0 = shape.vertices[edge.v0], &v1 = shape.vertices[edge.v1];
   const SegmentClosest c = closest_points_on_segments(a, b, v0, v1, scale.clip);
   if (c.parallel) return false;    // a line contact: two points
-  const double guard = kDecisionMargin * 1e3;
-  if (!(c.t > guard && c.t < 1.0 - guard)) return false;
+  if (!(c.t > 1e-9 && c.t < 1.0 - 1e-9)) return false;
   const Vec3 d = c.point_a - c.point_b;    // from the edge to the segment
   const double distance = d.norm();
   if (distance <= kNearTouchMargin * scale.length) return false;
   for (int k = 0; k < edge.faces; ++k)
-    if (edge.outward[k].dot(d) <= kAngleMargin * distance) return false;
-
+    if (edge.outward[k].dot(d) < -1e-9 * distance) return false;    // over a face, not the edge
+  for (int k = 0; k < edge.faces; ++k) {
+    const int f = shape.edge_faces[e][k];
+    const double misalignment = 1.0 - shape.faces[f].normal.dot(d) / distance;
+    if (misalignment <= 0.5 * Tolerance::kFaceAlign) return clip_to_face(features, f, a, b, wire_radius, activation, out);
+    if (misalignment < 2.0 * Tolerance::kFaceAlign) return false;
+  }
   out = BodyAnswer{};
   out.smallest_gap = INFINITY;
   add_point(a, b, c.point_a, d / distance, distance, shape.radius, wire_radius, activation,
             make_key(segment_feature_at(c.s), edge_feature(edge.v0, edge.v1)), out);
   return true;
+}
+
+// The segment a-b over face f. If its lower end lies over the face, that end is the
+// segment's closest point to the core, the contact axis is f's normal and the contact is
+// f's clipped stretch. If the lower end lies beyond a side, the closest point lies beyond
+// that side's edge: the edge decides.
+bool answer_from_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, double wire_radius,
+                      double activation, BodyAnswer &out)
+{
+  const Face &face = features.shape().faces[f];
+  const Scales scale = scales_of(a, b, wire_radius, features.shape());
+  const double height[2] = {face.normal.dot(a) - face.offset, face.normal.dot(b) - face.offset};
+  if (std::min(height[0], height[1]) <= kNearTouchMargin * scale.length) return false;
+  const Vec3 end[2] = {a, b};
+  FaceSides sides;
+  if (!sides_of(features, f, end, scale, sides)) return false;
+  const int low = height[0] <= height[1] ? 0 : 1;
+  if (sides.outside[low] < 0) return clip_to_face(features, f, a, b, wire_radius, activation, out);
+  const ShapeFeatures::Side &side = features.side(features.face(f).first_side + sides.outside[low]);
+  return answer_from_edge(features, side.edge, a, b, wire_radius, activation, out);
 }
 
 // The segment's closest point to vertex v lies inside the vertex's cone: every edge from
@@ -265,7 +297,7 @@ ShapeFeatures::ShapeFeatures(const Spheropolyhedron &shape) : shape_(&shape)
     for (int k = 0; k < m; ++k) {
       const Vec3 &r0 = shape.vertices[face.vertices[k]], &r1 = shape.vertices[face.vertices[(k + 1) % m]];
       const Vec3 outward = (r1 - r0).cross(face.normal).normalized();    // as clip_by_side
-      sides_.push_back({outward, outward.dot(r0)});
+      sides_.push_back({outward, outward.dot(r0), -1});
     }
   }
   auto add_edge = [&](int v0, int v1, int faces, const Vec3 &out0, const Vec3 &out1) {
@@ -282,6 +314,11 @@ ShapeFeatures::ShapeFeatures(const Spheropolyhedron &shape) : shape_(&shape)
     add_edge(v0, v1, 2, out0, out1);
   }
   std::sort(edge_lookup_.begin(), edge_lookup_.end());
+  for (size_t f = 0; f < shape.faces.size(); ++f) {
+    const std::vector<int> &loop = shape.faces[f].vertices;
+    for (size_t k = 0; k < loop.size(); ++k)
+      sides_[faces_[f].first_side + k].edge = edge_between(loop[k], loop[(k + 1) % loop.size()]);
+  }
 
   const int n = static_cast<int>(shape.vertices.size());
   std::vector<std::vector<int>> around(n);
@@ -303,6 +340,22 @@ int ShapeFeatures::edge_between(int a, int b) const
   return it != edge_lookup_.end() && it->first == key ? it->second : -1;
 }
 
+namespace {
+
+// The body-frame answer in the world frame.
+TrackedSegmentContact &to_world(const BodyAnswer &body, const GrainFrame &frame, TrackedSegmentContact &out)
+{
+  out.contact = body.contact;
+  for (int k = 0; k < out.contact.count; ++k) {
+    SegmentContact &p = out.contact.points[k];
+    p.point = frame.rotation * p.point + frame.centre;
+    p.normal = frame.rotation * p.normal;
+  }
+  return out;
+}
+
+}    // namespace
+
 TrackedSegmentContact contact_segment_grain_tracked(const Segment &segment, const ShapeFeatures &features,
                                                     const GrainFrame &frame, double activation,
                                                     FeatureHint &hint, ContactWorkspace &workspace)
@@ -312,26 +365,32 @@ TrackedSegmentContact contact_segment_grain_tracked(const Segment &segment, cons
   TrackedSegmentContact out;
   BodyAnswer body;
   const Spheropolyhedron &shape = features.shape();
-  out.from_hint = segment.p0.allFinite() && segment.p1.allFinite() && segment.radius >= 0.0 && activation >= 0.0 &&
-                  answer_from_hint(features, hint, a, b, segment.radius, activation, body);
+  const bool valid = segment.p0.allFinite() && segment.p1.allFinite() && segment.radius >= 0.0 &&
+                     std::isfinite(activation) && activation >= 0.0;
+  out.from_hint = valid && answer_from_hint(features, hint, a, b, segment.radius, activation, body);
   if (out.from_hint) {
     out.clearance = body.smallest_gap;
-  } else {
-    body.contact = contact_segment_grain({a, b, segment.radius}, shape, Pose(), activation, workspace);
-    if (!body.contact.empty()) hint = hint_from(features, body.contact);    // else keep the last one
-    // Nothing within the activation distance: every gap is larger, and larger than the
-    // gap of the bounding spheres.
-    const double bounding_gap = (0.5 * (a + b)).norm() - 0.5 * (b - a).norm() - segment.radius - shape.bounding_radius;
-    out.clearance = std::max(activation, bounding_gap);
-    for (const SegmentContact &p : body.contact) out.clearance = std::min(out.clearance, p.gap);
+    return to_world(body, frame, out);
   }
-  out.contact = body.contact;
-  for (int k = 0; k < out.contact.count; ++k) {
-    SegmentContact &p = out.contact.points[k];
-    p.point = frame.rotation * p.point + frame.centre;
-    p.normal = frame.rotation * p.normal;
+  // Nothing within the activation distance (most candidate pairs): the core distance says so.
+  if (valid && !shape.vertices.empty()) {
+    const Vec3 ends[2] = {a, b};
+    const GjkResult g = gjk_distance(ends, 2, shape.vertices.data(), static_cast<int>(shape.vertices.size()),
+                                     scales_of(a, b, segment.radius, shape).length);
+    const double gap = g.distance - shape.radius - segment.radius;
+    if (!g.overlap && gap > activation) {
+      out.clearance = gap;
+      return out;
+    }
   }
-  return out;
+  body.contact = contact_segment_grain({a, b, segment.radius}, shape, Pose(), activation, workspace);
+  if (!body.contact.empty()) hint = hint_from(features, body.contact);    // else keep the last one
+  // Nothing within the activation distance: every gap is larger, and larger than the gap of
+  // the bounding spheres.
+  const double bounding_gap = (0.5 * (a + b)).norm() - 0.5 * (b - a).norm() - segment.radius - shape.bounding_radius;
+  out.clearance = std::max(activation, bounding_gap);
+  for (const SegmentContact &p : body.contact) out.clearance = std::min(out.clearance, p.gap);
+  return to_world(body, frame, out);
 }
 
 }    // namespace nscd

@@ -27,6 +27,7 @@ class ShapeFeatures {
   struct Side {          // a side plane of a face: the plane through one of its edges,
     Vec3 outward;        // perpendicular to the face, unit normal pointing away from it
     double offset;       // outward . x on the plane
+    int edge;            // the edge it passes through (index into edge())
   };
   struct FaceInfo {
     int first_side, side_count;    // into sides(), in the face's counter-clockwise order

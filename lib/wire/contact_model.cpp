@@ -93,7 +93,7 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
       moved[g] = (now.position - then.position).norm() +
                  turned_by(then.orientation, now.orientation) * scene.grains[g].shape->bounding_radius;
     }
-    for (GrainPair &p : grain_pairs_) p.clearance -= moved[p.grain];
+    for (size_t k = 0; k < grain_pairs_.size(); ++k) grain_watch_[k].threshold -= moved[grain_pairs_[k].grain];
   }
   boundary_travel_ += fastest_boundary_ * step_;    // the boundaries moved over the last step
   step_ = dt_step;
@@ -121,13 +121,16 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
 }
 
 // The lists miss no pair that can touch while every pair closed by less than the skin
-// since they were built.
-bool ContactModel::lists_outdated(const std::vector<Vec3> &x, double tau) const
+// since they were built. Keeps each node's displacement since then, for the watches.
+bool ContactModel::lists_outdated(const std::vector<Vec3> &x, double tau)
 {
   if (!lists_valid_ || x.size() != built_at_.size()) return true;
-  double node2 = 0.0;
-  for (size_t k = 0; k < x.size(); ++k) node2 = std::max(node2, (x[k] - built_at_[k]).squaredNorm());
-  const double node = std::sqrt(node2);
+  double node = 0.0;
+  moved_.resize(x.size());
+  for (size_t k = 0; k < x.size(); ++k) {
+    moved_[k] = (x[k] - built_at_[k]).norm();
+    node = std::max(node, moved_[k]);
+  }
   const double other = std::max(other_moved_, boundary_travel_ + fastest_boundary_ * tau);
   return node + std::max(node, other) > skin_;
 }
@@ -142,7 +145,9 @@ void ContactModel::carry_memories()
   carry(wire_pairs_);
   carry(boundary_pairs_);
   grain_pairs_.clear();
+  grain_watch_.clear();
   wire_pairs_.clear();
+  wire_watch_.clear();
   boundary_pairs_.clear();
   lists_valid_ = false;
 }
@@ -166,6 +171,7 @@ void ContactModel::rebuild(const std::vector<Vec3> &x, double tau)
   for (BoundaryPair &p : boundary_pairs_) recall(p);
   carried_.clear();    // contacts that are no candidates any more are open
   built_at_ = x;
+  moved_.assign(x.size(), 0.0);
   grains_built_at_.clear();
   for (const GrainCopy &g : scene_.grains) grains_built_at_.push_back(g.pose);
   boundary_travel_ = -fastest_boundary_ * tau;
@@ -215,8 +221,8 @@ void ContactModel::find_grain_pairs(const std::vector<Vec3> &x)
       p.b = e.b;
       p.grain = found[k].grain;
       p.key = {e.id_a, e.id_b, found[k].id, 0};
-      p.clearance = 0.0;
       grain_pairs_.push_back(p);
+      grain_watch_.push_back({e.a, e.b, 0.0});
     }
   }
 }
@@ -267,8 +273,8 @@ void ContactModel::find_wire_pairs(const std::vector<Vec3> &x)
       p.b1 = B.a;
       p.b2 = B.b;
       p.key = {A.id_a, A.id_b, B.id_a, B.id_b};
-      p.clearance = 0.0;
       wire_pairs_.push_back(p);
+      wire_watch_.push_back({A.a, A.b, B.a, B.b, 0.0});
     }
   }
 }
@@ -296,8 +302,17 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
 {
   if (lists_outdated(x, tau)) rebuild(x, tau);
   ContactTotals out;
-  for (GrainPair &p : grain_pairs_) out.wire_grain += grain_contact(p, x, v, dt, f, reactions, out);
-  for (WirePair &p : wire_pairs_) out.wire_wire += wire_contact(p, x, v, dt, f, out);
+  const double *moved = moved_.data();
+  for (size_t k = 0; k < grain_watch_.size(); ++k) {
+    const GrainWatch &w = grain_watch_[k];
+    if (std::max(moved[w.a], moved[w.b]) < w.threshold) continue;    // cannot touch yet
+    out.wire_grain += grain_contact(grain_pairs_[k], grain_watch_[k], x, v, dt, f, reactions, out);
+  }
+  for (size_t k = 0; k < wire_watch_.size(); ++k) {
+    const WireWatch &w = wire_watch_[k];
+    if (std::max(moved[w.a1], moved[w.a2]) + std::max(moved[w.b1], moved[w.b2]) < w.threshold) continue;
+    out.wire_wire += wire_contact(wire_pairs_[k], wire_watch_[k], x, v, dt, f, out);
+  }
   for (BoundaryPair &p : boundary_pairs_) out.wire_boundary += boundary_contact(p, x, v, tau, dt, f, reactions, out);
   return out;
 }
@@ -305,19 +320,16 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
 // Element (a, b) against a grain held still: a soft contact at each end of the touching
 // stretch (or at its one point), each with its own overlap and spring, weighed by
 // stretch_end_weight; the query reaches r_w beyond touching, the length of that ramp.
-bool ContactModel::grain_contact(GrainPair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
-                                 std::vector<Vec3> &f, GrainForceAccumulator &reactions, ContactTotals &totals)
+bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vector<Vec3> &x,
+                                 const std::vector<Vec3> &v, double dt, std::vector<Vec3> &f,
+                                 GrainForceAccumulator &reactions, ContactTotals &totals)
 {
   const Vec3 &xa = x[p.a], &xb = x[p.b];
-  if (p.clearance > 0.0) {    // no point of the element can have reached the grain yet
-    const double c2 = p.clearance * p.clearance;
-    if ((xa - p.ref_a).squaredNorm() < c2 && (xb - p.ref_b).squaredNorm() < c2) return false;
-  }
   const TrackedSegmentContact t = contact_segment_grain_tracked({xa, xb, radius_}, *grain_features_[p.grain],
                                                                 frames_[p.grain], radius_, p.hint, workspace_);
-  p.ref_a = xa;
-  p.ref_b = xb;
-  p.clearance = t.clearance;
+  watch.threshold = t.clearance - std::max(moved_[p.a], moved_[p.b]);
+  ++grain_evaluations_;
+  grain_from_hint_ += t.from_hint;
   if (t.clearance > 0.0) {
     p.memory = ContactMemory{};
     return false;
@@ -358,22 +370,12 @@ bool ContactModel::grain_contact(GrainPair &p, const std::vector<Vec3> &x, const
 
 // Element A = (a1, a2) against element B = (b1, b2); the force on A, minus on B, each
 // split over its nodes by the lever rule.
-bool ContactModel::wire_contact(WirePair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
-                                std::vector<Vec3> &f, ContactTotals &totals)
+bool ContactModel::wire_contact(WirePair &p, WireWatch &watch, const std::vector<Vec3> &x,
+                                const std::vector<Vec3> &v, double dt, std::vector<Vec3> &f, ContactTotals &totals)
 {
-  const int node[4] = {p.a1, p.a2, p.b1, p.b2};
-  if (p.clearance > 0.0) {    // the elements closed by at most the sum of their largest node moves
-    double moved_a = 0.0, moved_b = 0.0;
-    for (int k = 0; k < 2; ++k) {
-      moved_a = std::max(moved_a, (x[node[k]] - p.ref[k]).squaredNorm());
-      moved_b = std::max(moved_b, (x[node[k + 2]] - p.ref[k + 2]).squaredNorm());
-    }
-    if (std::sqrt(moved_a) + std::sqrt(moved_b) < p.clearance) return false;
-  }
   const std::optional<SegmentContact> c = contact_segments({x[p.a1], x[p.a2], radius_}, {x[p.b1], x[p.b2], radius_},
                                                            std::numeric_limits<double>::max());
-  for (int k = 0; k < 4; ++k) p.ref[k] = x[node[k]];
-  p.clearance = c->gap;
+  watch.threshold = c->gap - std::max(moved_[p.a1], moved_[p.a2]) - std::max(moved_[p.b1], moved_[p.b2]);
   if (c->gap >= 0.0) {
     p.memory = ContactMemory{};
     return false;

@@ -167,6 +167,10 @@ class ContactModel {
   void forget_shapes() { features_.clear(); }
 
   int rebuilds() const { return rebuilds_; }
+  // Element-grain evaluations so far, and how many of them were answered from the tracked
+  // feature (contact_segment_grain_tracked) rather than by the full query.
+  long long grain_evaluations() const { return grain_evaluations_; }
+  long long grain_evaluations_from_hint() const { return grain_from_hint_; }
   std::size_t candidates() const { return grain_pairs_.size() + wire_pairs_.size() + boundary_pairs_.size(); }
 
  private:
@@ -175,15 +179,24 @@ class ContactModel {
     ContactKey key;
     ContactMemory memory;
     FeatureHint hint;
-    Vec3 ref_a = Vec3::Zero(), ref_b = Vec3::Zero();    // node positions at the last evaluation
-    double clearance = 0.0;    // smallest gap then (lower bound); <= 0: evaluate every substep
   };
   struct WirePair {
     int a1, a2, b1, b2;
     ContactKey key;
     ContactMemory memory;
-    std::array<Vec3, 4> ref{Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    double clearance = 0.0;
+  };
+  // Which pairs need no look this substep, in arrays of their own (read every substep).
+  // A pair whose smallest gap was g at its last evaluation, when its nodes had moved by
+  // up to D_then since the lists were built, has a gap > 0 as long as the displacement of
+  // its nodes (max over an element's two) stays below threshold = g - D_then (for two
+  // elements: their sum). <= 0: evaluate.
+  struct GrainWatch {
+    int a, b;
+    double threshold;
+  };
+  struct WireWatch {
+    int a1, a2, b1, b2;
+    double threshold;
   };
   struct BoundaryPair {
     int node, boundary;
@@ -199,14 +212,18 @@ class ContactModel {
   std::vector<const ShapeFeatures *> grain_features_;
   std::unordered_map<const Spheropolyhedron *, std::unique_ptr<ShapeFeatures>> features_;
   std::vector<GrainPair> grain_pairs_;
+  std::vector<GrainWatch> grain_watch_;
   std::vector<WirePair> wire_pairs_;
+  std::vector<WireWatch> wire_watch_;
   std::vector<BoundaryPair> boundary_pairs_;
   std::unordered_map<ContactKey, ContactMemory, ContactKeyHash> carried_;
   bool lists_valid_ = false;
   int rebuilds_ = 0;
+  long long grain_evaluations_ = 0, grain_from_hint_ = 0;
 
   // displacements since the last build
   std::vector<Vec3> built_at_;              // node positions
+  std::vector<double> moved_;               // per node, distance from there (this substep)
   std::vector<Pose> grains_built_at_;
   std::vector<Pose> grains_last_step_;
   double boundary_travel_ = 0.0;            // of the fastest boundary, before this step
@@ -219,7 +236,7 @@ class ContactModel {
   ContactWorkspace workspace_;
 
   const ShapeFeatures &features_of(const Spheropolyhedron &shape);
-  bool lists_outdated(const std::vector<Vec3> &x, double tau) const;
+  bool lists_outdated(const std::vector<Vec3> &x, double tau);
   void carry_memories();
   void rebuild(const std::vector<Vec3> &x, double tau);
   void find_grain_pairs(const std::vector<Vec3> &x);
@@ -227,9 +244,9 @@ class ContactModel {
   void find_boundary_pairs(const std::vector<Vec3> &x, double tau);
   template <class Pair> void recall(Pair &pair);
 
-  bool grain_contact(GrainPair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
+  bool grain_contact(GrainPair &p, GrainWatch &watch, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
                      std::vector<Vec3> &f, GrainForceAccumulator &reactions, ContactTotals &totals);
-  bool wire_contact(WirePair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
+  bool wire_contact(WirePair &p, WireWatch &watch, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
                     std::vector<Vec3> &f, ContactTotals &totals);
   bool boundary_contact(BoundaryPair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double tau,
                         double dt, std::vector<Vec3> &f, GrainForceAccumulator &reactions, ContactTotals &totals);

@@ -140,5 +140,29 @@ TEST(SegmentTracking, SegmentSlidingOffAFaceIsClippedAtItsEdge)
   EXPECT_NEAR(t.contact[1].gap, -depth + 0.1 * tilt, 1e-14);
 }
 
+// An element longer than a face lies across it, tilted a little: within the face-alignment
+// tolerance of contact_segment_grain (1.4e-4 rad) it touches with the stretch clipped at
+// both sides of the face, beyond it at one point at the lower edge; both from the hint.
+TEST(SegmentTracking, ElementAcrossANarrowFaceIsClippedAtBothSidesOrTouchesAnEdge)
+{
+  const double r = 0.02, r_w = 0.01, depth = 1e-3;
+  const Spheropolyhedron box = make_box(0.1, 0.5, 0.5, r);    // top face 0.2 wide in x
+  const Pose pose = place(box, Vec3::Zero());
+  const ShapeFeatures features(box);
+  ContactWorkspace ws_tracked, ws_direct;
+  for (double slope : {1e-5, 1e-3}) {
+    FeatureHint hint;
+    const double z = 0.5 + r + r_w - depth;
+    const Segment segment{Vec3(-0.2, 0, z), Vec3(0.2, 0, z + 0.4 * slope), r_w};
+    contact_segment_grain_tracked(segment, features, GrainFrame(pose), r_w, hint, ws_tracked);
+    const TrackedSegmentContact t = contact_segment_grain_tracked(segment, features, GrainFrame(pose), r_w, hint, ws_tracked);
+    const SegmentGrainContact d = contact_segment_grain(segment, box, pose, r_w, ws_direct);
+    EXPECT_TRUE(t.from_hint) << "slope " << slope;
+    EXPECT_LT(difference(t, d, 0.5), 1e-12) << "slope " << slope;
+    ASSERT_EQ(t.contact.count, slope < 1e-4 ? 2 : 1) << "slope " << slope;
+    EXPECT_NEAR(t.contact[0].point.x(), -0.1, 1e-4) << "slope " << slope;    // at the lower edge
+  }
+}
+
 }    // namespace
 }    // namespace nscd
