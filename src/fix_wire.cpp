@@ -1,6 +1,7 @@
 /* fix wire: the wire subcycle of lib/wire driven from LAMMPS' post_force. Gathers the wire
-   nodes, grains and boundaries, calls lib/wire, scatters the forces; LAMMPS' communication,
-   restart and output. The physics is in lib/wire (doc/wire_model.md). */
+   nodes, grains and boundaries, calls lib/wire (wire_step.h: Gear-5 subcycle, elastic
+   forces, contact_model.h), scatters the forces; LAMMPS' communication, restart and
+   output. The physics is in lib/wire (doc/wire_model.md). */
 
 #include "fix_wire.h"
 
@@ -24,15 +25,13 @@
 #include "timer.h"
 #include "update.h"
 #include "wire/contact_model.h"
-#include "wire/elastic_forces.h"
 #include "wire/stability.h"
-#include "wire/subcycle.h"
 #include "wire/wire_step.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <numeric>
+#include <map>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -65,14 +64,14 @@ struct FixWire::Lib : wire::Exchange {
   std::unique_ptr<wire::ContactModel> contacts;
   wire::SubcyclePlan plan;
   std::array<double, 6> corrector = wire::gear5_corrector_coefficients(wire::GearCorrector::ThreeSixteenths);
-  wire::WireStep step;    // owned nodes, then the ghost copies; this rank's elements and joints
+  wire::WireStep step;    // owned nodes, then their ghost copies; this rank's elements and joints
   wire::StepTiming timing;
   std::vector<BoundaryView> boundaries;
   std::vector<Vec3> step_start;
   std::vector<wire::StoredContact> restored;    // from a restart file, for the contact model
   explicit Lib(FixWire *f) : fix(f) {}
-  // The subcycle's communication: positions and velocities to the ghost copies of the nodes,
-  // their forces back to the owners (nodes only).
+  // The subcycle's communication, wire nodes only: positions and velocities to the ghost
+  // copies, their forces back to the owners.
   void share_copies(wire::WireNodeSet &) override { fix->communicate(Comm::node_state, false, true); }
   void return_copy_forces(wire::WireNodeSet &) override { fix->communicate(Comm::node_force, true, true); }
 };
@@ -87,7 +86,7 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
   size_vector = (int) diagnostics.size();
   extvector = 0;
   comm_forward = comm_reverse = 6;
-  for (int iarg = 3; iarg < narg;) parse_option(narg, arg, iarg);
+  for (int iarg = 3; iarg < narg; iarg += 2) parse_option(narg, arg, iarg);
   wire::SoftContactLaw &law = lib->law;
   // One friction coefficient given: static = dynamic (with mu_d left at 0 a contact would
   // lose all friction after its first slip).
@@ -121,55 +120,36 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   const std::string key = arg[iarg];
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value", key);
   const char *value = arg[iarg + 1];
-  const double x = key == "substeps" ? 0.0 : utils::numeric(FLERR, value, false, lmp);
-  auto positive_or_zero = [&]() {
-    if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
-    return x;
-  };
   wire::SoftContactLaw &law = lib->law;
-  if (key == "k_n") law.k_n = positive_or_zero();
-  else if (key == "gamma_n") law.gamma_n = positive_or_zero();
-  else if (key == "k_t") law.k_t = positive_or_zero();
-  else if (key == "gamma_t") law.gamma_t = positive_or_zero();
-  else if (key == "mu_s") law.mu_s = positive_or_zero(), mu_s_given = true;
-  else if (key == "mu_d") law.mu_d = positive_or_zero(), mu_d_given = true;
-  else if (key == "radius") wire_radius = positive_or_zero();
-  else if (key == "damp") node_damping = positive_or_zero();
-  else if (key == "contacts_per_node") contacts_per_node = positive_or_zero();
-  else if (key == "skin") {
-    if (!(x > 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
-    contact_skin = x;
-  } else if (key == "dt_sp") {
-    requested_dt_sp = positive_or_zero();
-    requested_substeps = 0;
-  } else if (key == "safety") {
-    if (!(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
-    safety = x;
-  } else if (key == "substeps") {
+  const std::map<std::string, double *> plain = {
+      {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
+      {"mu_s", &law.mu_s}, {"mu_d", &law.mu_d}, {"radius", &wire_radius}, {"damp", &node_damping},
+      {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
+      {"skin", &contact_skin}};
+  if (key == "substeps") {
     requested_dt_sp = 0.0;
     requested_substeps = strcmp(value, "auto") == 0 ? 0 : utils::inumeric(FLERR, value, false, lmp);
     if (requested_substeps < 0) error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
-  } else {
+    return;
+  }
+  const auto option = plain.find(key);
+  if (option == plain.end())
     error->all(FLERR, "fix wire: unknown keyword '{}' (expected k_n, gamma_n, k_t, gamma_t, mu_s, "
                "mu_d, radius, damp, substeps, dt_sp, safety, contacts_per_node, skin)", key);
-  }
-  iarg += 2;
+  const double x = utils::numeric(FLERR, value, false, lmp);
+  if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
+  if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
+  if (key == "skin" && !(x > 0.0)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
+  *option->second = x;
+  mu_s_given = mu_s_given || key == "mu_s";
+  mu_d_given = mu_d_given || key == "mu_d";
+  if (key == "dt_sp") requested_substeps = 0;
 }
 
-int FixWire::setmask()
-{
-  return POST_FORCE;
-}
-
-double FixWire::substep() const
-{
-  return lib->plan.dt_sp;
-}
-
-int FixWire::substeps() const
-{
-  return lib->plan.substeps;
-}
+int FixWire::setmask() { return POST_FORCE; }
+double FixWire::substep() const { return lib->plan.dt_sp; }
+int FixWire::substeps() const { return lib->plan.substeps; }
+double FixWire::compute_vector(int n) { return diagnostics[n]; }
 
 /* ---------------------------------------------------------------------- setup */
 
@@ -206,7 +186,14 @@ void FixWire::check_partners()
   if (any_grain != MAXTAGINT)
     error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the group must "
                "hold wire nodes (shape 0) only, grains belong to fix nscd", any_grain, group->names[igroup]);
-  // post_force fixes after this one would change node forces the subcycle has already used
+  // post_force fixes after this one on its nodes change forces the subcycle has already used
+  auto acts_on_nodes = [&](const Fix *other) {
+    int mine = 0, any = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) mine = 1;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    return any != 0;
+  };
   bool after = false;
   for (int f = 0; f < modify->nfix; f++) {
     if (modify->fix[f] == this) after = true;
@@ -215,16 +202,6 @@ void FixWire::check_partners()
                      "the wire subcycle does not see its forces; define it before fix wire",
                      modify->fix[f]->id, modify->fix[f]->style);
   }
-}
-
-/* True if fix `other` has wire nodes of this fix's group in its own group (on any rank). */
-bool FixWire::acts_on_nodes(const Fix *other) const
-{
-  int mine = 0, any = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit)) mine = 1;
-  MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
-  return any != 0;
 }
 
 /* The walls and the plate touch the wire nodes of their groups, with fix wire's law and the
@@ -298,24 +275,19 @@ void FixWire::make_contact_model()
   if (!(skin > 0.0))
     error->all(FLERR, "fix wire: contacts need a skin > 0 for their candidate lists; give 'neighbor "
                "SKIN bin' or fix wire's 'skin S'");
-  std::vector<wire::StoredContact> memories = std::move(lib->restored);
-  if (lib->contacts) {
-    const std::vector<wire::StoredContact> kept = lib->contacts->memories();
-    memories.insert(memories.end(), kept.begin(), kept.end());
-  }
+  std::vector<wire::StoredContact> memories = lib->contacts ? lib->contacts->memories() : lib->restored;
   lib->contacts = std::make_unique<wire::ContactModel>(lib->law, wire_radius, skin);
   lib->contacts->add_memories(memories);
   lib->restored.clear();
   lib->step.contacts = lib->contacts.get();
 }
 
+/* Atoms may have changed rank since the last step (balance, a box change) while the
+   neighbour build of this setup keeps the last step's time stamp: index again. */
 void FixWire::setup(int /*vflag*/)
 {
-  // Atoms may have changed rank since the last step (balance, a box change) while the
-  // neighbour build of this setup keeps the last step's time stamp: index again.
   indexed_at = -1;
   gather_elements();
-  check_ghost_cutoff();
   rescale_states(lib->plan.dt_sp);
   if (lib->contacts) lib->contacts->forget_shapes();
   diagnostics[SUBSTEPS] = lib->plan.substeps;
@@ -337,46 +309,40 @@ void FixWire::reset_dt()
 
 /* The wire's topology on every rank: a contact pair is found on the rank owning the first
    node of its lower element, and that rank must see the other element whatever rank stores
-   its bond. newton_bond on: each element is in exactly one rank's bond list. */
+   its bond (newton_bond on: each element is in exactly one rank's bond list). That rank
+   must also hold as ghosts every grain and node the contact can reach within a step: from
+   that node, a grain's centre within L + r_w + R + skin and the other element's nodes
+   within 2 L + 2 r_w + skin; checked across ranks and periodic boundaries. */
 void FixWire::gather_elements()
 {
   std::vector<std::array<tagint, 2>> mine;
-  double longest = 0.0;
+  double longest[2] = {0.0, 0.0};    // element, grain radius
   for (int n = 0; bond && n < neighbor->nbondlist; n++) {
     const int *b = neighbor->bondlist[n];
     const tagint p = atom->tag[b[0]], q = atom->tag[b[1]];
     mine.push_back({std::min(p, q), std::max(p, q)});
-    longest = std::max({longest, bond->rest_length(b[2]), (vec3(atom->x[b[0]]) - vec3(atom->x[b[1]])).norm()});
+    longest[0] = std::max({longest[0], bond->rest_length(b[2]), (vec3(atom->x[b[0]]) - vec3(atom->x[b[1]])).norm()});
   }
-  MPI_Allreduce(&longest, &longest_element, 1, MPI_DOUBLE, MPI_MAX, world);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (avec->shape[i] != 0) longest[1] = std::max(longest[1], avec->radius[i]);
+  MPI_Allreduce(MPI_IN_PLACE, longest, 2, MPI_DOUBLE, MPI_MAX, world);
   elements = gather_records(mine, world, true);
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  if (!lib->contacts || elements.empty()) return;
   std::vector<std::array<std::int64_t, 2>> all;
   for (const auto &e : elements) all.push_back({e[0], e[1]});
-  if (lib->contacts) lib->contacts->set_elements(std::move(all));
-}
+  lib->contacts->set_elements(std::move(all));
 
-/* The rank computing a contact (owner of the first node of the lower element) must hold as
-   ghosts every grain and node that contact can reach within a step: from that node, a
-   grain's centre lies within L + r_w + R + skin and the other element's nodes within
-   2 L + 2 r_w + skin. Needed across ranks and across periodic boundaries. */
-void FixWire::check_ghost_cutoff()
-{
-  const bool periodic = domain->xperiodic || domain->yperiodic || domain->zperiodic;
-  if ((!periodic && comm->nprocs == 1) || elements.empty() || !lib->contacts) return;
-  double reach = 0.0, largest_grain;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (avec->shape[i] != 0) reach = std::max(reach, avec->radius[i]);
-  MPI_Allreduce(&reach, &largest_grain, 1, MPI_DOUBLE, MPI_MAX, world);
-  const double L = longest_element;
-  const double needed = std::max(largest_grain + L + wire_radius, 2.0 * L + 2.0 * wire_radius) + neighbor->skin;
+  if (!(domain->xperiodic || domain->yperiodic || domain->zperiodic) && comm->nprocs == 1) return;
+  const double L = longest[0], R = longest[1];
+  const double needed = std::max(R + L + wire_radius, 2.0 * L + 2.0 * wire_radius) + neighbor->skin;
   const double have = std::max(neighbor->cutneighmax, comm->cutghostuser);
   if (have < needed)
     error->all(FLERR, "fix wire: ghost cutoff {:.6g} is below the reach {:.6g} of a wire contact "
                "(max(largest grain radius {:.6g} + L + r_w, 2 L + 2 r_w) + skin, with element length "
-               "L = {:.6g}, r_w = {:.6g}) across {}; use 'comm_modify cutoff {:.6g}'", have, needed,
-               largest_grain, L, wire_radius, comm->nprocs > 1 ? "MPI ranks" : "a periodic boundary", needed);
+               "L = {:.6g}, r_w = {:.6g}) across {}; use 'comm_modify cutoff {:.6g}'", have, needed, R, L,
+               wire_radius, comm->nprocs > 1 ? "MPI ranks" : "a periodic boundary", needed);
 }
 
 void FixWire::rescale_states(double new_dt)
@@ -399,35 +365,32 @@ void FixWire::post_force(int /*vflag*/)
   const bool reindexed = neighbor->lastcall != indexed_at;
   if (reindexed) index_atoms();
   load_nodes();
-  measure_external_forces();
   if (lib->contacts) update_scene(reindexed);
   else lib->step.reactions.reset((int) lib->boundaries.size());
   if (lib->contacts && reindexed) hand_over_memories();
   try {
     const wire::StepTotals t = lib->step.run(lib->plan, lib->corrector, *lib, lib->timing);
-    diagnostics[E_AXIAL] = t.elastic.axial;
-    diagnostics[E_BENDING] = t.elastic.bending;
-    diagnostics[E_CONTACT] = t.contacts.energy;
-    diagnostics[N_WIRE_WIRE] = t.contacts.wire_wire;
-    diagnostics[N_WIRE_GRAIN] = t.contacts.wire_grain;
-    diagnostics[N_WIRE_BOUNDARY] = t.contacts.wire_boundary;
+    const double values[6] = {t.elastic.axial, t.elastic.bending, t.contacts.energy, (double) t.contacts.wire_wire,
+                              (double) t.contacts.wire_grain, (double) t.contacts.wire_boundary};
+    const int index[6] = {E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, N_WIRE_BOUNDARY};
+    double sums[6];
+    MPI_Allreduce(values, sums, 6, MPI_DOUBLE, MPI_SUM, world);
+    for (int k = 0; k < 6; k++) diagnostics[index[k]] = sums[k];
   } catch (std::exception &e) {
     error->one(FLERR, "fix wire: step {}: {}", update->ntimestep, e.what());
   }
   check_motion_within_skin();
   store_nodes();
-  hand_forces_to_grains();
-  hand_forces_to_boundaries();
-  sum_diagnostics_over_ranks();
+  hand_forces();
   substeps_run += lib->plan.substeps;
   timing[T_TOTAL] += platform::walltime() - wall_start;
   timing[T_CPU] += platform::cputime() - cpu_start;
 }
 
-/* After a neighbour build: node and grain indices of the local atoms (owned nodes first,
-   each part in the order of atom IDs, so the nodes of a wire numbered along it lie side by
-   side in memory) and this rank's elements and joints in node indices, each with the law
-   of its bond and angle type. */
+/* After a neighbour build: node indices of the local atoms (owned nodes first, each part
+   in the order of atom IDs, so the nodes of a wire numbered along it lie side by side in
+   memory), the grains, and this rank's elements and joints in node indices with the law of
+   their bond and angle types. */
 void FixWire::index_atoms()
 {
   const int ntotal = atom->nlocal + atom->nghost;
@@ -464,11 +427,15 @@ void FixWire::index_atoms()
 }
 
 /* The owned nodes' Gear states from the per-atom array, with position and velocity taken
-   from LAMMPS (which may have remapped or changed them). Nodes outside the group are
-   anchors: held where they are. */
+   from LAMMPS (which may have remapped or changed them); nodes outside the group are
+   anchors, held where they are. Then the external force on each node: LAMMPS' force
+   (gravity, addforce, ...) minus what bond_style and angle_style wire put there, which the
+   subcycle recomputes every substep (the same kernels at the same positions, so the
+   difference is exact up to the order of summation). */
 void FixWire::load_nodes()
 {
-  wire::WireNodeSet &nodes = lib->step.nodes;
+  wire::WireStep &step = lib->step;
+  wire::WireNodeSet &nodes = step.nodes;
   const double dt = lib->plan.dt_sp;
   nodes.state.resize(owned_nodes);
   nodes.mass.resize(owned_nodes);
@@ -487,6 +454,17 @@ void FixWire::load_nodes()
     nodes.fixed[k] = (atom->mask[i] & groupbit) ? 0 : 1;
   }
   wire::prepare_wire_nodes(nodes, dt);
+
+  for (size_t k = 0; k < atom_of_node.size(); k++) nodes.positions[k] = vec3(atom->x[atom_of_node[k]]);
+  try {
+    step.elastic_forces_now();
+  } catch (std::exception &e) {
+    error->one(FLERR, "fix wire: step {}: {}", update->ntimestep, e.what());
+  }
+  communicate(Comm::node_force, true);
+  step.external.resize(owned_nodes);
+  for (int k = 0; k < owned_nodes; k++) step.external[k] = vec3(atom->f[atom_of_node[k]]) - nodes.forces[k];
+  step.damping = node_damping;
 }
 
 void FixWire::store_nodes()
@@ -503,24 +481,6 @@ void FixWire::store_nodes()
   communicate(Comm::node_position, false);    // ghosts at the final positions, for output
 }
 
-/* External force on a node = LAMMPS' force (gravity, addforce, ...) minus what bond_style
-   and angle_style wire put there, which the subcycle recomputes every substep: the same
-   kernels at the same positions, so the difference is exact up to the order of summation. */
-void FixWire::measure_external_forces()
-{
-  wire::WireStep &step = lib->step;
-  for (size_t k = 0; k < atom_of_node.size(); k++) step.nodes.positions[k] = vec3(atom->x[atom_of_node[k]]);
-  try {
-    step.elastic_forces_now();
-  } catch (std::exception &e) {
-    error->one(FLERR, "fix wire: step {}: {}", update->ntimestep, e.what());
-  }
-  communicate(Comm::node_force, true);
-  step.external.resize(owned_nodes);
-  for (int k = 0; k < owned_nodes; k++) step.external[k] = vec3(atom->f[atom_of_node[k]]) - step.nodes.forces[k];
-  step.damping = node_damping;
-}
-
 /* The contact model's scene of the step. After a neighbour build: the node ids, which nodes
    may touch which boundary, and the copies of the elements (each element whose first node,
    or an image of it, is here, with the image of its second node closest to it); every step
@@ -529,23 +489,23 @@ void FixWire::update_scene(bool reindexed)
 {
   wire::ContactScene scene = lib->contacts->take_scene();
   const int nodes = (int) atom_of_node.size();
-  if (reindexed) {
-    scene.node_id.resize(nodes);
-    scene.node_boundaries.assign(nodes, 0u);
-    scene.elements.clear();
-    for (int k = 0; k < nodes; k++) {
-      const int i = atom_of_node[k];
-      scene.node_id[k] = atom->tag[i];
-      for (size_t b = 0; b < lib->boundaries.size() && i < atom->nlocal; b++)
-        if ((atom->mask[i] & groupbit) && (atom->mask[i] & lib->boundaries[b].groupbit)) scene.node_boundaries[k] |= 1u << b;
-      const std::array<tagint, 2> from{atom->tag[i], 0}, to{atom->tag[i], MAXTAGINT};
-      for (auto e = std::lower_bound(elements.begin(), elements.end(), from); e != elements.end() && *e <= to; ++e) {
-        const int j = domain->closest_image(i, atom->map((*e)[1]));
-        if ((j < 0 || node_of_atom[j] < 0) && i < atom->nlocal)
-          error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node "
-                     "ID {}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
-        if (j >= 0 && node_of_atom[j] >= 0) scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
-      }
+  for (int k = 0; k < nodes && reindexed; k++) {
+    if (k == 0) {
+      scene.node_id.resize(nodes);
+      scene.node_boundaries.assign(nodes, 0u);
+      scene.elements.clear();
+    }
+    const int i = atom_of_node[k];
+    scene.node_id[k] = atom->tag[i];
+    for (size_t b = 0; b < lib->boundaries.size() && i < atom->nlocal; b++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & lib->boundaries[b].groupbit)) scene.node_boundaries[k] |= 1u << b;
+    const std::array<tagint, 2> from{atom->tag[i], 0}, to{atom->tag[i], MAXTAGINT};
+    for (auto e = std::lower_bound(elements.begin(), elements.end(), from); e != elements.end() && *e <= to; ++e) {
+      const int j = domain->closest_image(i, atom->map((*e)[1]));
+      if ((j < 0 || node_of_atom[j] < 0) && i < atom->nlocal)
+        error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node ID "
+                   "{}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
+      if (j >= 0 && node_of_atom[j] >= 0) scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
     }
   }
   if (!atom_of_grain.empty()) communicate(Comm::grain_velocity, false);    // ghost grains' v and omega
@@ -590,8 +550,7 @@ void FixWire::hand_over_memories()
 void FixWire::check_motion_within_skin()
 {
   if (!lib->contacts) return;
-  double largest[2] = {0.0, 0.0};    // node, grain
-  largest[0] = lib->step.largest_displacement(lib->step_start);
+  double largest[2] = {lib->step.largest_displacement(lib->step_start), 0.0};    // node, grain
   for (int j = 0; j < atom->nlocal; j++)
     if (avec->shape[j] != 0)
       largest[1] = std::max(largest[1], (vec3(atom->v[j]).norm() + vec3(avec->omega[j]).norm() * avec->radius[j]) * update->dt);
@@ -609,54 +568,33 @@ void FixWire::check_motion_within_skin()
 }
 
 /* Mean wire->grain force and torque over the substeps, added to the owners' f and torque
-   (ghost grains' shares summed onto their owners first). */
-void FixWire::hand_forces_to_grains()
+   (ghost grains' shares summed onto their owners first); the mean forces on the walls and
+   the plate, summed over the ranks, to each boundary before fix nscd solves the step. */
+void FixWire::hand_forces()
 {
+  const wire::GrainForceAccumulator &reactions = lib->step.reactions;
   const int grains = lib->contacts ? (int) atom_of_grain.size() : 0;
   grain_force_buffer.assign(6 * (size_t) (atom->nlocal + atom->nghost), 0.0);
   double total[3] = {0.0, 0.0, 0.0};
   for (int g = 0; g < grains; g++) {
     double *b = &grain_force_buffer[6 * (size_t) atom_of_grain[g]];
-    store(lib->step.reactions.mean_force(g), b);
-    store(lib->step.reactions.mean_torque(g), b + 3);
+    store(reactions.mean_force(g), b);
+    store(reactions.mean_torque(g), b + 3);
     for (int d = 0; d < 3; d++) total[d] += b[d];
   }
   MPI_Allreduce(total, &diagnostics[GRAIN_FX], 3, MPI_DOUBLE, MPI_SUM, world);
-  if (grains == 0) return;
-  communicate(Comm::grain_force, true);
-  for (int i = 0; i < atom->nlocal; i++) {
+  if (grains > 0) communicate(Comm::grain_force, true);
+  for (int i = 0; i < atom->nlocal && grains > 0; i++) {
     if (avec->shape[i] == 0) continue;
     add_to(atom->f[i], vec3(&grain_force_buffer[6 * (size_t) i]));
     add_to(avec->torque[i], vec3(&grain_force_buffer[6 * (size_t) i + 3]));
   }
-}
-
-/* Mean wire forces on the walls and the plate over the substeps, summed over the ranks, to
-   each boundary (on every rank) before fix nscd solves the step. */
-void FixWire::hand_forces_to_boundaries()
-{
   const size_t n = lib->boundaries.size();
   if (n == 0) return;
-  const int first = lib->step.reactions.num_grains() - (int) n;
   std::vector<double> mine(3 * n), all(3 * n);
-  for (size_t k = 0; k < n; k++) store(lib->step.reactions.mean_force(first + (int) k), &mine[3 * k]);
+  for (size_t k = 0; k < n; k++) store(reactions.mean_force(reactions.num_grains() - (int) (n - k)), &mine[3 * k]);
   MPI_Allreduce(mine.data(), all.data(), (int) all.size(), MPI_DOUBLE, MPI_SUM, world);
   for (size_t k = 0; k < n; k++) lib->boundaries[k].boundary->take_wire_force(vec3(&all[3 * k]), update->ntimestep);
-}
-
-/* Energies and contact counts of the last substep, summed over the ranks. */
-void FixWire::sum_diagnostics_over_ranks()
-{
-  const int index[6] = {E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, N_WIRE_BOUNDARY};
-  double sums[6];
-  for (int k = 0; k < 6; k++) sums[k] = diagnostics[index[k]];
-  MPI_Allreduce(MPI_IN_PLACE, sums, 6, MPI_DOUBLE, MPI_SUM, world);
-  for (int k = 0; k < 6; k++) diagnostics[index[k]] = sums[k];
-}
-
-double FixWire::compute_vector(int n)
-{
-  return diagnostics[n];
 }
 
 /* fix wire's share of the run, printed after it: time per node per substep, its split over
@@ -664,20 +602,20 @@ double FixWire::compute_vector(int n)
 void FixWire::post_run()
 {
   if (substeps_run == 0) return;
-  timing[T_CONTACTS] = lib->timing.contacts;
-  timing[T_ELASTIC] = lib->timing.elastic;
-  timing[T_INTEGRATION] = lib->timing.integration;
-  timing[T_COMM] = lib->timing.exchange + timing[T_COMM_STEP];
-  timing[T_NODE_SUBSTEPS] = lib->timing.node_substeps;
+  const wire::StepTiming &t = lib->timing;
+  timing[T_CONTACTS] = t.contacts;
+  timing[T_ELASTIC] = t.elastic;
+  timing[T_INTEGRATION] = t.integration;
+  timing[T_COMM] = t.exchange + timing[T_COMM_STEP];
+  timing[T_NODE_SUBSTEPS] = t.node_substeps;
   std::array<double, N_TIMING> sum;
   MPI_Allreduce(timing.data(), sum.data(), N_TIMING, MPI_DOUBLE, MPI_SUM, world);
   double slowest;
   MPI_Allreduce(&timing[T_TOTAL], &slowest, 1, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me != 0) return;
-  const double loop = timer->get_wall(Timer::TOTAL), total = sum[T_TOTAL];
+  const double loop = timer->get_wall(Timer::TOTAL), total = sum[T_TOTAL], steps = (double) substeps_run;
   const double per = sum[T_NODE_SUBSTEPS] > 0.0 ? 1e9 / sum[T_NODE_SUBSTEPS] : 0.0;
-  auto share = [&](double t) { return total > 0.0 ? 100.0 * t / total : 0.0; };
-  const double other = total - sum[T_CONTACTS] - sum[T_ELASTIC] - sum[T_INTEGRATION] - sum[T_COMM];
+  auto share = [&](double x) { return total > 0.0 ? 100.0 * x / total : 0.0; };
   std::string text = fmt::format(
       "fix wire {0}: {1:.4g} s of {2:.4g} s loop time ({3:.3g} %, slowest rank), {4} substeps, {5:.0f} nodes\n"
       "fix wire {0}: {6:.4g} ns per node per substep (time summed over ranks; cpu {7:.4g} ns)\n"
@@ -685,9 +623,10 @@ void FixWire::post_run()
       "{11:.3g} %, step setup and hand-over {12:.3g} %\n"
       "fix wire {0}: communication per substep (all ranks): {13:.0f} bytes of wire nodes; {14:.0f} bytes "
       "for 6 + 3 doubles per ghost atom of any kind\n",
-      id, slowest, loop, loop > 0.0 ? 100.0 * slowest / loop : 0.0, substeps_run, sum[T_NODE_SUBSTEPS] / substeps_run,
+      id, slowest, loop, loop > 0.0 ? 100.0 * slowest / loop : 0.0, substeps_run, sum[T_NODE_SUBSTEPS] / steps,
       total * per, sum[T_CPU] * per, share(sum[T_CONTACTS]), share(sum[T_ELASTIC]), share(sum[T_INTEGRATION]),
-      share(sum[T_COMM]), share(other), 8.0 * sum[T_SENT] / substeps_run, 8.0 * sum[T_SENT_ALL_ATOMS] / substeps_run);
+      share(sum[T_COMM]), share(total - sum[T_CONTACTS] - sum[T_ELASTIC] - sum[T_INTEGRATION] - sum[T_COMM]),
+      8.0 * sum[T_SENT] / steps, 8.0 * sum[T_SENT_ALL_ATOMS] / steps);
   if (lib->contacts) {
     const wire::ContactModel &c = *lib->contacts;
     text += fmt::format("fix wire {}: rank 0: {} contact list builds, {} candidate pairs, {:.4g} % of {} "
@@ -700,7 +639,7 @@ void FixWire::post_run()
 
 /* ---------------------------------------------------------------------- comm */
 
-/* counted: the subcycle's (timed by lib/wire, counted here), else once per step. */
+/* counted: the subcycle's (timed by lib/wire and counted here), else once per step. */
 void FixWire::communicate(Comm mode, bool reverse, bool counted)
 {
   const double t0 = platform::walltime();
@@ -714,36 +653,18 @@ void FixWire::communicate(Comm mode, bool reverse, bool counted)
 
 /* What the current mode sends of atom i: up to two vectors of 3 doubles, none for atoms of
    the other kind. Each mode sends wire nodes only or grains only: both sides know from the
-   shape which atoms those are. The first vector of a node position mode is shifted across
-   periodic boundaries. */
+   shape which atoms those are. A node's first vector is its position (periodic shift). */
 int FixWire::comm_fields(int i, double *field[2])
 {
   const bool grain = avec->shape[i] != 0;
   const int node = grain ? -1 : node_of_atom[i];
+  wire::WireNodeSet &nodes = lib->step.nodes;
   switch (comm_mode) {
-    case Comm::node_state:
-      if (grain) return 0;
-      field[0] = lib->step.nodes.positions[node].data();
-      field[1] = lib->step.nodes.velocities[node].data();
-      return 2;
-    case Comm::node_position:
-      if (grain) return 0;
-      field[0] = atom->x[i];
-      return 1;
-    case Comm::node_force:
-      if (grain) return 0;
-      field[0] = lib->step.nodes.forces[node].data();
-      return 1;
-    case Comm::grain_velocity:
-      if (!grain) return 0;
-      field[0] = atom->v[i];
-      field[1] = avec->omega[i];
-      return 2;
-    case Comm::grain_force:
-      if (!grain) return 0;
-      field[0] = &grain_force_buffer[6 * (size_t) i];
-      field[1] = field[0] + 3;
-      return 2;
+    case Comm::node_state: field[0] = nodes.positions[node].data(), field[1] = nodes.velocities[node].data(); return grain ? 0 : 2;
+    case Comm::node_position: field[0] = atom->x[i]; return grain ? 0 : 1;
+    case Comm::node_force: field[0] = nodes.forces[node].data(); return grain ? 0 : 1;
+    case Comm::grain_velocity: field[0] = atom->v[i], field[1] = avec->omega[i]; return grain ? 2 : 0;
+    case Comm::grain_force: field[0] = &grain_force_buffer[6 * (size_t) i], field[1] = field[0] + 3; return grain ? 2 : 0;
   }
   return 0;
 }
@@ -761,10 +682,7 @@ int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int 
   for (int k = 0; k < n; k++)
     for (int f = 0, fields = comm_fields(list[k], field); f < fields; f++)
       for (int d = 0; d < 3; d++) buf[m++] = field[f][d] + (f == 0 ? shift[d] : 0.0);
-  if (counting_comm) {    // the subcycle's: counted for post_run()
-    timing[T_SENT] += m;
-    timing[T_SENT_ALL_ATOMS] += 6.0 * n;
-  }
+  if (counting_comm) timing[T_SENT] += m, timing[T_SENT_ALL_ATOMS] += 6.0 * n;
   return m;
 }
 
@@ -784,10 +702,7 @@ int FixWire::pack_reverse_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++)
     for (int f = 0, fields = comm_fields(i, field); f < fields; f++)
       for (int d = 0; d < 3; d++) buf[m++] = field[f][d];
-  if (counting_comm) {
-    timing[T_SENT] += m;
-    timing[T_SENT_ALL_ATOMS] += 3.0 * n;
-  }
+  if (counting_comm) timing[T_SENT] += m, timing[T_SENT_ALL_ATOMS] += 3.0 * n;
   return m;
 }
 
@@ -802,20 +717,11 @@ void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
 
 /* ---------------------------------------------------------------------- per-atom state */
 
-void FixWire::grow_arrays(int nmax)
-{
-  memory->grow(gear, nmax, kGearColumns, "wire:gear");
-}
-
-void FixWire::copy_arrays(int i, int j, int /*delflag*/)
-{
-  std::copy(gear[i], gear[i] + kGearColumns, gear[j]);
-}
-
-void FixWire::set_arrays(int i)
-{
-  std::fill(gear[i], gear[i] + kGearColumns, 0.0);
-}
+void FixWire::grow_arrays(int nmax) { memory->grow(gear, nmax, kGearColumns, "wire:gear"); }
+void FixWire::copy_arrays(int i, int j, int /*delflag*/) { std::copy(gear[i], gear[i] + kGearColumns, gear[j]); }
+void FixWire::set_arrays(int i) { std::fill(gear[i], gear[i] + kGearColumns, 0.0); }
+int FixWire::size_restart(int /*nlocal*/) { return kGearColumns + 1; }
+int FixWire::maxsize_restart() { return kGearColumns + 1; }
 
 int FixWire::pack_exchange(int i, double *buf)
 {
@@ -844,24 +750,13 @@ void FixWire::unpack_restart(int nlocal, int nth)
   std::copy(&extra[nlocal][m + 1], &extra[nlocal][m + 1] + kGearColumns, gear[nlocal]);
 }
 
-int FixWire::size_restart(int /*nlocal*/)
-{
-  return kGearColumns + 1;
-}
-
-int FixWire::maxsize_restart()
-{
-  return kGearColumns + 1;
-}
-
 /* Global restart: a version number, the step of the stored Gear states and the contact
    memories of all ranks (wire::StoredContact, plain numbers). */
 void FixWire::write_restart(FILE *fp)
 {
   std::vector<wire::StoredContact> mine;
   // Read from a restart and no step since: every rank holds them all; write them once.
-  if (!memories_on_every_rank || comm->me == 0)
-    mine = lib->contacts ? lib->contacts->memories() : lib->restored;
+  if (!memories_on_every_rank || comm->me == 0) mine = lib->contacts ? lib->contacts->memories() : lib->restored;
   const std::vector<wire::StoredContact> all = gather_records(mine, world, false);
   if (comm->me != 0) return;
   const double header[3] = {kRestartVersion, state_dt, (double) all.size()};
@@ -871,16 +766,16 @@ void FixWire::write_restart(FILE *fp)
   fwrite(all.data(), sizeof(wire::StoredContact), all.size(), fp);
 }
 
+/* read_restart hands every rank the whole block; hand_over_memories() keeps the own ones. */
 void FixWire::restart(char *buf)
 {
-  // read_restart hands every rank the whole block; hand_over_memories() keeps the own ones.
   double header[3];
   std::memcpy(header, buf, sizeof(double));
   if (header[0] >= 0.0) {    // an older block without version: (dt, count, records)
     state_dt = header[0];
     if (comm->me == 0)
-      error->warning(FLERR, "fix wire: restart file of an older fix wire: its contacts' friction "
-                     "springs are not read (they start again from zero)");
+      error->warning(FLERR, "fix wire: restart file of an older fix wire: its contacts' friction springs "
+                     "are not read (they start again from zero)");
     return;
   }
   std::memcpy(header, buf, sizeof(header));
@@ -892,9 +787,8 @@ void FixWire::restart(char *buf)
 
 double FixWire::memory_usage()
 {
-  return (double) atom->nmax * kGearColumns * sizeof(double) +
-      (double) lib->step.nodes.positions.size() * 3 * sizeof(Vec3) +
-      (double) lib->step.nodes.state.size() * sizeof(wire::Gear5State) +
-      (double) grain_force_buffer.size() * sizeof(double) +
+  const wire::WireNodeSet &nodes = lib->step.nodes;
+  return (double) atom->nmax * kGearColumns * sizeof(double) + (double) nodes.positions.size() * 3 * sizeof(Vec3) +
+      (double) nodes.state.size() * sizeof(wire::Gear5State) + (double) grain_force_buffer.size() * sizeof(double) +
       (lib->contacts ? (double) lib->contacts->candidates() * 256.0 : 0.0);
 }

@@ -105,24 +105,19 @@ class FixWire : public Fix {
 
   void parse_option(int narg, char **arg, int &iarg);
   void check_partners();
-  bool acts_on_nodes(const Fix *other) const;
   void find_boundaries();
   void plan_substeps();
   void make_contact_model();
   void gather_elements();
-  void check_ghost_cutoff();
   void rescale_states(double new_dt);
 
   void index_atoms();
   void load_nodes();
   void store_nodes();
-  void measure_external_forces();
   void update_scene(bool reindexed);
   void hand_over_memories();
   void check_motion_within_skin();
-  void hand_forces_to_grains();
-  void hand_forces_to_boundaries();
-  void sum_diagnostics_over_ranks();
+  void hand_forces();
   void communicate(Comm mode, bool reverse, bool counted = false);
   int comm_fields(int i, double *field[2]);
 };
