@@ -34,12 +34,12 @@ run() {    # label, log name, launcher words...
   echo "== $label"
   awk '/benchmark phase:/ {phase = $3}
        /^fix wire w:/ {print phase ": " $0}
-       /^Loop time/ {loop = $4} /^Modify/ {print phase ": Modify " $4 " s of loop " loop " s"}' "$log"
+       /^Loop time/ {loop = $4} /^Modify/ {print phase ": Modify " $5 " s (average over ranks) of loop " loop " s"}' "$log"
   awk '/^ +Step/ {getline; first = $0} /^Loop time/ {print "   thermo at the end of the phase: " last} /^ +[0-9]+ / {last = $0}' "$log"
 }
 
 run "1 rank" one_rank.log "$lmp"
-run "2 ranks" two_ranks.log "$mpirun" -np 2 "$lmp"
+run "2 ranks" two_ranks.log $mpirun -np 2 "$lmp"
 if [ -n "${LMP_BEFORE:-}" ]; then
   run "1 rank, LMP_BEFORE" before.log "$LMP_BEFORE"
 fi

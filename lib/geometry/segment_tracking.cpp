@@ -80,60 +80,61 @@ void add_point(const Vec3 &a, const Vec3 &b, const Vec3 &core_point, const Vec3 
   p.key = key;
 }
 
-// Signed distances of the segment's two ends beyond each side plane of face f, and which
-// side each end lies beyond (-1: over the face; false: beyond two, or too close to a side
-// plane to tell).
+// Where the segment leaves face f's prism (the region over the face, inside its side
+// planes) at each end: -1 if that end lies over the face, else the side plane it crosses
+// last on the way out (the innermost crossing), at parameter `at` along a -> b. False
+// where round-off could decide otherwise (an end or a crossing next to a side plane), or
+// where the segment misses the prism.
 struct FaceSides {
-  int outside[2] = {-1, -1};
-  double beyond[2] = {0.0, 0.0};    // for that side
+  int exit[2] = {-1, -1};
+  double at[2] = {0.0, 1.0};
 };
 
-bool sides_of(const ShapeFeatures &features, int f, const Vec3 (&end)[2], const Scales &scale, FaceSides &out)
+bool sides_of(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, const Scales &scale, FaceSides &out)
 {
   const ShapeFeatures::FaceInfo &info = features.face(f);
   const double guard = kDecisionMargin * scale.length;
   for (int k = 0; k < info.side_count; ++k) {
     const ShapeFeatures::Side &side = features.side(info.first_side + k);
-    for (int e = 0; e < 2; ++e) {
-      const double d = side.outward.dot(end[e]) - side.offset;
-      if (std::abs(d - scale.clip) <= guard) return false;
-      if (d <= scale.clip) continue;
-      if (out.outside[e] >= 0) return false;    // beyond two sides: near a corner
-      out.outside[e] = k;
+    const double d[2] = {side.outward.dot(a) - side.offset, side.outward.dot(b) - side.offset};
+    if (std::abs(d[0] - scale.clip) <= guard || std::abs(d[1] - scale.clip) <= guard) return false;
+    const bool out0 = d[0] > scale.clip, out1 = d[1] > scale.clip;
+    if (out0 && out1) return false;    // the whole segment beyond this side
+    if (!out0 && !out1) continue;
+    const int e = out0 ? 0 : 1;
+    const double t = std::min(1.0, std::max(0.0, d[0] / (d[0] - d[1])));    // Sutherland-Hodgman's crossing
+    if (out.exit[e] >= 0 && std::abs(t - out.at[e]) <= 1e3 * kDecisionMargin) return false;    // at a corner
+    if (out.exit[e] < 0 || (e == 0 ? t > out.at[0] : t < out.at[1])) {
+      out.exit[e] = k;
+      out.at[e] = t;
     }
   }
-  return true;
+  return out.at[0] < out.at[1];
 }
 
 // The face case of contact_segment_grain for face f (the contact axis is f's normal): the
-// segment clipped by f's side planes, each end over the face or where the segment crosses
-// the side plane it lies beyond. False where round-off could decide otherwise, or where the
-// segment misses the face's prism.
-bool clip_to_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, double wire_radius,
-                  double activation, BodyAnswer &out)
+// segment clipped by f's side planes, each end over the face or where the segment leaves
+// the face's prism. False where round-off could decide otherwise.
+bool clip_to_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, const Scales &scale,
+                  double wire_radius, double activation, BodyAnswer &out)
 {
   const Spheropolyhedron &shape = features.shape();
   const Face &face = shape.faces[f];
-  const Scales scale = scales_of(a, b, wire_radius, shape);
-  const Vec3 end[2] = {a, b};
   FaceSides sides;
-  if (!sides_of(features, f, end, scale, sides)) return false;
-  if (sides.outside[0] >= 0 && sides.outside[0] == sides.outside[1]) return false;    // misses the face
+  if (!sides_of(features, f, a, b, scale, sides)) return false;
   const ShapeFeatures::FaceInfo &info = features.face(f);
   const double guard = kDecisionMargin * scale.length;
+  const Vec3 end[2] = {a, b};
   Vec3 core_point[2];
   std::uint64_t key[2];
   for (int e = 0; e < 2; ++e) {
-    const int k = sides.outside[e];
+    const int k = sides.exit[e];
     if (k < 0) {
       core_point[e] = end[e];
       key[e] = make_key(vertex_feature(e), face_feature(f));
       continue;
     }
-    // where the segment crosses side plane k (Sutherland-Hodgman's crossing)
-    const ShapeFeatures::Side &side = features.side(info.first_side + k);
-    const double d0 = side.outward.dot(a) - side.offset, d1 = side.outward.dot(b) - side.offset;
-    core_point[e] = a + std::min(1.0, std::max(0.0, d0 / (d0 - d1))) * (b - a);
+    core_point[e] = a + sides.at[e] * (b - a);
     for (int j = 0; j < info.side_count; ++j) {    // inside the face's other side planes
       if (j == k) continue;
       const ShapeFeatures::Side &other = features.side(info.first_side + j);
@@ -157,12 +158,11 @@ bool clip_to_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec
 // faces: then it is the closest point to the core. The contact is that point, unless the
 // direction is one of the faces' normals within contact_segment_grain's face alignment:
 // then it is that face's clipped stretch.
-bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const Vec3 &b, double wire_radius,
-                      double activation, BodyAnswer &out)
+bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const Vec3 &b, const Scales &scale,
+                      double wire_radius, double activation, BodyAnswer &out)
 {
   const Spheropolyhedron &shape = features.shape();
   const ShapeFeatures::EdgeInfo &edge = features.edge(e);
-  const Scales scale = scales_of(a, b, wire_radius, shape);
   const Vec3 &v0 = shape.vertices[edge.v0], &v1 = shape.vertices[edge.v1];
   const SegmentClosest c = closest_points_on_segments(a, b, v0, v1, scale.clip);
   if (c.parallel) return false;    // a line contact: two points
@@ -175,8 +175,10 @@ bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const
   for (int k = 0; k < edge.faces; ++k) {
     const int f = shape.edge_faces[e][k];
     const double misalignment = 1.0 - shape.faces[f].normal.dot(d) / distance;
-    if (misalignment <= 0.5 * Tolerance::kFaceAlign) return clip_to_face(features, f, a, b, wire_radius, activation, out);
-    if (misalignment < 2.0 * Tolerance::kFaceAlign) return false;
+    // (the band leaves room for the round-off of the direction contact_segment_grain gets)
+    if (misalignment <= (1.0 - 1e-4) * Tolerance::kFaceAlign)
+      return clip_to_face(features, f, a, b, scale, wire_radius, activation, out);
+    if (misalignment < (1.0 + 1e-4) * Tolerance::kFaceAlign) return false;
   }
   out = BodyAnswer{};
   out.smallest_gap = INFINITY;
@@ -187,31 +189,28 @@ bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const
 
 // The segment a-b over face f. If its lower end lies over the face, that end is the
 // segment's closest point to the core, the contact axis is f's normal and the contact is
-// f's clipped stretch. If the lower end lies beyond a side, the closest point lies beyond
-// that side's edge: the edge decides.
-bool answer_from_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, double wire_radius,
-                      double activation, BodyAnswer &out)
+// f's clipped stretch. If the lower end lies beyond the face, the closest point lies beyond
+// the edge through which the segment leaves the face: that edge decides.
+bool answer_from_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, const Scales &scale,
+                      double wire_radius, double activation, BodyAnswer &out)
 {
   const Face &face = features.shape().faces[f];
-  const Scales scale = scales_of(a, b, wire_radius, features.shape());
   const double height[2] = {face.normal.dot(a) - face.offset, face.normal.dot(b) - face.offset};
   if (std::min(height[0], height[1]) <= kNearTouchMargin * scale.length) return false;
-  const Vec3 end[2] = {a, b};
   FaceSides sides;
-  if (!sides_of(features, f, end, scale, sides)) return false;
+  if (!sides_of(features, f, a, b, scale, sides)) return false;
   const int low = height[0] <= height[1] ? 0 : 1;
-  if (sides.outside[low] < 0) return clip_to_face(features, f, a, b, wire_radius, activation, out);
-  const ShapeFeatures::Side &side = features.side(features.face(f).first_side + sides.outside[low]);
-  return answer_from_edge(features, side.edge, a, b, wire_radius, activation, out);
+  if (sides.exit[low] < 0) return clip_to_face(features, f, a, b, scale, wire_radius, activation, out);
+  const ShapeFeatures::Side &side = features.side(features.face(f).first_side + sides.exit[low]);
+  return answer_from_edge(features, side.edge, a, b, scale, wire_radius, activation, out);
 }
 
 // The segment's closest point to vertex v lies inside the vertex's cone: every edge from
 // v leads away from it.
-bool answer_from_vertex(const ShapeFeatures &features, int v, const Vec3 &a, const Vec3 &b, double wire_radius,
-                        double activation, BodyAnswer &out)
+bool answer_from_vertex(const ShapeFeatures &features, int v, const Vec3 &a, const Vec3 &b, const Scales &scale,
+                        double wire_radius, double activation, BodyAnswer &out)
 {
   const Spheropolyhedron &shape = features.shape();
-  const Scales scale = scales_of(a, b, wire_radius, shape);
   const Vec3 &p = shape.vertices[v];
   const double s = closest_parameter_on_segment(a, b, p);
   const Vec3 on_segment = a + s * (b - a);
@@ -233,10 +232,11 @@ bool answer_from_vertex(const ShapeFeatures &features, int v, const Vec3 &a, con
 bool answer_from_hint(const ShapeFeatures &features, const FeatureHint &hint, const Vec3 &a, const Vec3 &b,
                       double wire_radius, double activation, BodyAnswer &out)
 {
+  const Scales scale = scales_of(a, b, wire_radius, features.shape());
   switch (hint.kind) {
-    case FeatureHint::Kind::face: return answer_from_face(features, hint.index, a, b, wire_radius, activation, out);
-    case FeatureHint::Kind::edge: return answer_from_edge(features, hint.index, a, b, wire_radius, activation, out);
-    case FeatureHint::Kind::vertex: return answer_from_vertex(features, hint.index, a, b, wire_radius, activation, out);
+    case FeatureHint::Kind::face: return answer_from_face(features, hint.index, a, b, scale, wire_radius, activation, out);
+    case FeatureHint::Kind::edge: return answer_from_edge(features, hint.index, a, b, scale, wire_radius, activation, out);
+    case FeatureHint::Kind::vertex: return answer_from_vertex(features, hint.index, a, b, scale, wire_radius, activation, out);
     case FeatureHint::Kind::none: return false;
   }
   return false;

@@ -164,5 +164,32 @@ TEST(SegmentTracking, ElementAcrossANarrowFaceIsClippedAtBothSidesOrTouchesAnEdg
   }
 }
 
+// The same element tilted through the face-alignment tolerance itself (1 - cos = 1e-8, a
+// tilt of 1.41421e-4): the tracked answer follows contact_segment_grain's branch on both
+// sides, up to a band of 1e-4 of the tolerance where it asks contact_segment_grain.
+TEST(SegmentTracking, AtTheFaceAlignmentToleranceTheTrackedAnswerTakesTheSameBranch)
+{
+  const double r = 0.02, r_w = 0.01, depth = 1e-3;
+  const Spheropolyhedron box = make_box(0.1, 0.5, 0.5, r);
+  const Pose pose = place(box, Vec3::Zero());
+  const ShapeFeatures features(box);
+  ContactWorkspace ws_tracked, ws_direct;
+  int from_hint = 0, both_points = 0, steps = 0;
+  for (double tilt = 1.405e-4; tilt <= 1.424e-4; tilt += 1e-8, ++steps) {
+    const double z = 0.5 + r + r_w - depth;
+    FeatureHint hint;    // from the top face, as a run finds it
+    contact_segment_grain_tracked({Vec3(-0.05, 0, z), Vec3(0.05, 0, z), r_w}, features, GrainFrame(pose), r_w, hint, ws_tracked);
+    const Segment segment{Vec3(-0.2, 0, z), Vec3(0.2, 0, z + 0.4 * std::tan(tilt)), r_w};
+    const TrackedSegmentContact t = contact_segment_grain_tracked(segment, features, GrainFrame(pose), r_w, hint, ws_tracked);
+    const SegmentGrainContact d = contact_segment_grain(segment, box, pose, r_w, ws_direct);
+    EXPECT_LT(difference(t, d, 0.5), 1e-12) << "tilt " << tilt;
+    from_hint += t.from_hint;
+    both_points += d.count == 2;
+  }
+  EXPECT_GT(both_points, 0);                // face patch below the tolerance
+  EXPECT_LT(both_points, steps);            // one point at the edge above it
+  EXPECT_GE(from_hint, steps - 3);          // the band is ~3e-12 rad wide here
+}
+
 }    // namespace
 }    // namespace nscd
