@@ -26,10 +26,10 @@ if [ ! -f column_settled.data ]; then
     -log settle.log -screen none
 fi
 
-run() {    # label, log name, launcher words...
-  local label=$1 log=$2
-  shift 2
-  "$@" -in "$here/in.column" -var dir "$here/" -var rest "$steps" -var slide "$steps" -var wire_skin "skin $skin" \
+run() {    # label, log name, fix wire's skin option, launcher words...
+  local label=$1 log=$2 skin_option=$3
+  shift 3
+  "$@" -in "$here/in.column" -var dir "$here/" -var rest "$steps" -var slide "$steps" -var wire_skin "$skin_option" \
     -log "$log" -screen none
   echo "== $label"
   awk '/benchmark phase:/ {phase = $3}
@@ -38,10 +38,10 @@ run() {    # label, log name, launcher words...
   awk '/^ +Step/ {getline; first = $0} /^Loop time/ {print "   thermo at the end of the phase: " last} /^ +[0-9]+ / {last = $0}' "$log"
 }
 
-run "1 rank" one_rank.log "$lmp"
-run "2 ranks" two_ranks.log $mpirun -np 2 "$lmp"
-if [ -n "${LMP_BEFORE:-}" ]; then
-  run "1 rank, LMP_BEFORE" before.log "$LMP_BEFORE"
+run "1 rank" one_rank.log "skin $skin" "$lmp"
+run "2 ranks" two_ranks.log "skin $skin" $mpirun -np 2 "$lmp"
+if [ -n "${LMP_BEFORE:-}" ]; then    # (a fix wire without the skin option)
+  run "1 rank, LMP_BEFORE" before.log "" "$LMP_BEFORE"
 fi
 echo
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"

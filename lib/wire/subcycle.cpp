@@ -36,22 +36,6 @@ SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_subst
   return plan;
 }
 
-Pose GrainMotion::pose_at(double tau) const
-{
-  Pose pose;
-  pose.position = start.position + tau * velocity;
-  const Vec3 turn = tau * angular_velocity;
-  const double angle = turn.norm();
-  const Quat rotation = angle > 0.0 ? Quat(Eigen::AngleAxisd(angle, turn / angle)) : Quat::Identity();
-  pose.orientation = (rotation * start.orientation).normalized();
-  return pose;
-}
-
-Vec3 GrainMotion::point_velocity(const Vec3 &world_point, double tau) const
-{
-  return velocity + angular_velocity.cross(world_point - pose_at(tau).position);
-}
-
 void GrainForceAccumulator::reset(int num_grains)
 {
   force_sum_.assign(num_grains, Vec3::Zero());
