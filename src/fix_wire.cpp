@@ -267,11 +267,12 @@ void FixWire::plan_substeps()
 }
 
 /* The contact model lives across runs (it holds the friction memories); a new skin makes a
-   new one, which takes the memories over. Default skin: the neighbour skin. */
+   new one, which takes the memories over. Default skin: 4 r_w, at most the neighbour skin
+   (a wider skin only adds candidate pairs to watch every substep). */
 void FixWire::make_contact_model()
 {
   if (lib->law.k_n == 0.0) return;
-  const double skin = contact_skin > 0.0 ? contact_skin : neighbor->skin;
+  const double skin = contact_skin > 0.0 ? contact_skin : std::min(neighbor->skin, 4.0 * wire_radius);
   if (!(skin > 0.0))
     error->all(FLERR, "fix wire: contacts need a skin > 0 for their candidate lists; give 'neighbor "
                "SKIN bin' or fix wire's 'skin S'");
