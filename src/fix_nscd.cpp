@@ -17,6 +17,7 @@
 #include "nscd_restart.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
+#include "nscd_contact.h"
 #include "nscd_boundary_fix.h"
 #include "pair_nscd.h"
 #include "update.h"
@@ -307,6 +308,8 @@ void FixNSCD::final_integrate()
   count_shares();
   solve();
   move_grains();
+  exchange_mode = Exchange::motion;    // ghosts' new velocities: next step's activations
+  comm->forward_comm(this, 6);
   hand_back_forces();
   solver->warm_start.store(solver->problem.contacts);
   warn_if_unconverged();
@@ -360,7 +363,7 @@ void FixNSCD::gather_contacts()
   boundary_counts.assign(boundaries.size(), 0);
   for (size_t k = 0; k < boundaries.size(); k++) {
     const size_t before = solver->problem.contacts.size();
-    boundaries[k]->append_contacts(solver->problem.contacts, pair->activation_distance());
+    boundaries[k]->append_contacts(solver->problem.contacts, pair->activation_distance(), dt);
     boundary_counts[k] = (int) (solver->problem.contacts.size() - before);
   }
   warm_start_contacts();
@@ -652,16 +655,18 @@ void FixNSCD::warn_if_contacts_can_be_missed()
       mine = std::max(mine, vec3(atom->v[i]).norm() + vec3(avec->omega[i]).norm() * avec->radius[i]);
   MPI_Allreduce(&mine, &max_step_travel, 1, MPI_DOUBLE, MPI_MAX, world);
   max_step_travel *= 2.0 * dt;    // two grains approaching each other
-  const double activation = pair->activation_distance();
-  if (max_step_travel <= activation) return;
+  const double needed = speculative_activation(pair->activation_distance(), max_step_travel / dt, dt);
+  const double covered = pair->activation_distance() + pair->reach_distance();
+  if (needed <= covered) return;
   const bigint step = update->ntimestep;
   if (last_speed_warning_step >= 0 && step - last_speed_warning_step < warn_every) return;
   last_speed_warning_step = step;
   if (comm->me == 0)
-    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step, more than "
-                   "the contact activation distance {:.3g}; contacts can be found late (overlap). "
-                   "Lower the timestep or raise 'pair_style nscd activation'", step,
-                   max_step_travel, activation);
+    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step; contacts "
+                   "are activated up to {:.3g} ahead (pair_style nscd activation + reach), so some "
+                   "can be found late (overlap). Raise 'pair_style nscd reach' to {:.3g} or lower "
+                   "the timestep", step, max_step_travel, covered,
+                   needed - pair->activation_distance());
 }
 
 void FixNSCD::measure_kinetic_energy()
@@ -712,6 +717,9 @@ int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
     if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
         for (int d = 0; d < 3; d++) buf[m++] = a[d];
+    } else if (exchange_mode == Exchange::motion) {
+      for (double *a : {atom->v[i], avec->omega[i]})
+        for (int d = 0; d < 3; d++) buf[m++] = a[d];
     } else {
       const nscd::SolverBody &body = solver->problem.bodies[i];
       for (int d = 0; d < 3; d++) buf[m++] = body.velocity[d];
@@ -731,6 +739,9 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
+        for (int d = 0; d < 3; d++) a[d] = buf[m++];
+    } else if (exchange_mode == Exchange::motion) {
+      for (double *a : {atom->v[i], avec->omega[i]})
         for (int d = 0; d < 3; d++) a[d] = buf[m++];
     } else {
       nscd::SolverBody &body = solver->problem.bodies[i];

@@ -74,7 +74,7 @@ class FixNSCD : public Fix {
   bigint lists_of_last_solve = -1;    // neighbor->lastcall at the last solve
   bool run_started = true;            // setup() builds new lists (after balance, ...)
 
-  enum class Exchange { state, share, correction, velocity, virial } exchange_mode = Exchange::state;
+  enum class Exchange { state, motion, share, correction, velocity, virial } exchange_mode = Exchange::state;
 
   // diagnostics of the last step (and the solver's report)
   bigint unconverged_steps = 0, last_warning_step = -1, last_speed_warning_step = -1;

@@ -8,6 +8,7 @@
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
+#include "nscd_arrays.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
 #include "nscd_restart.h"
@@ -29,7 +30,7 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
  public:
   explicit Plate(FixNSCDPlate &owner) : fix(owner), tag(boundary_tag(owner.id)) {}
 
-  void append_contacts(std::vector<nscd::Contact> &, double activation) override;
+  void append_contacts(std::vector<nscd::Contact> &, double activation, double dt) override;
   void take_impulses(const nscd::Contact *, int, double dt) override;
   void advance(double) override {}
   bool has_body() const override { return true; }
@@ -127,13 +128,16 @@ void FixNSCDPlate::setup(int /*vflag*/)
                "above all grains and wire nodes of its group", id, any_above, z);
 }
 
-void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)
 {
   const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z), nscd::Vec3(0.0, 0.0, -1.0)};
   const ContactLaw law{friction, restitution};
   Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & fix.groupbit) || avec->shape[i] == 0) continue;
+    const double closing = (vec3(atom->v[i]) - nscd::Vec3(0.0, 0.0, vz)).norm() +
+        vec3(avec->omega[i]).norm() * avec->radius[i];
+    const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {
       set = nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), face, activation, workspace);

@@ -35,7 +35,7 @@ class FixNSCDWall::Wall final : public NSCDBoundary {
  public:
   explicit Wall(FixNSCDWall &owner) : fix(owner), tag(boundary_tag(owner.id)) {}
 
-  void append_contacts(std::vector<nscd::Contact> &, double activation) override;
+  void append_contacts(std::vector<nscd::Contact> &, double activation, double dt) override;
   void take_impulses(const nscd::Contact *, int, double dt) override;
   void advance(double dt) override { reference_point() += dt * velocity; }
   nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
@@ -178,12 +178,14 @@ bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const
   return (d - d.dot(cylinder.axis_direction) * cylinder.axis_direction).norm() < cylinder.radius;
 }
 
-void FixNSCDWall::Wall::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+void FixNSCDWall::Wall::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)
 {
   const ContactLaw law{friction, restitution};
   Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & fix.groupbit) || avec->shape[i] == 0) continue;
+    const double closing = (vec3(atom->v[i]) - velocity).norm() + vec3(avec->omega[i]).norm() * avec->radius[i];
+    const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {
       set = kind == Kind::plane

@@ -18,8 +18,9 @@ class NSCDBoundary {
  public:
 
   // Appends the contacts of the boundary with OWNED grains (so each contact is on exactly
-  // one rank). body_i is the local atom index, body_j = nscd::kEnvironment.
-  virtual void append_contacts(std::vector<nscd::Contact> &contacts, double activation) = 0;
+  // one rank). body_i is the local atom index, body_j = nscd::kEnvironment. Each grain's
+  // activation is speculative_activation(activation, its closing speed, dt).
+  virtual void append_contacts(std::vector<nscd::Contact> &contacts, double activation, double dt) = 0;
 
   // After the solve: the contacts this boundary appended, with their solved impulses, in
   // the order it appended them; dt turns impulses into forces. Called on every rank.

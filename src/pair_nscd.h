@@ -46,7 +46,11 @@ class PairNSCD : public Pair {
   // Grain-grain contacts found by the last compute(): body indices are local atom
   // indices (owned or ghost), keys are (tag, tag, feature) canonical for warm starting.
   const std::vector<nscd::Contact> &contacts() const;
-  double activation_distance() const { return activation; }
+  double activation_distance() const { return activation; }    // the smallest, for every pair
+  // How far past `activation` the speculative activation of a pair may reach: the
+  // neighbour cutoff includes it, so every pair that close is in the list.
+  double reach_distance() const { return reach; }
+
   double friction(int itype, int jtype) const { return mu[itype][jtype]; }
   double restitution(int itype, int jtype) const { return restitution_coeff[itype][jtype]; }
 
@@ -54,6 +58,9 @@ class PairNSCD : public Pair {
   double activation_given = -1.0;    // from `activation D`; < 0: use the fraction
   double activation_fraction = 0.1;  // of the smallest bounding radius in the library
   double activation = 0.0;           // in use, set by init_style()
+  double reach_given = -1.0;         // from `reach D`; < 0: use reach_fraction
+  double reach_fraction = 0.5;       // of the smallest bounding radius in the library
+  double reach = 0.0;                // in use, set by init_style()
   double **mu = nullptr, **restitution_coeff = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
   // The contacts of the last compute() and the geometry's scratch space, behind a pointer:

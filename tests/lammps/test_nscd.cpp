@@ -441,9 +441,13 @@ TEST_F(NSCDTest, RestartCarriesTheWarmStart)
   EXPECT_GT(fix_value("cold", 0), 10 * (sweeps_straight + 2));
 }
 
-// Copies a restart file with every versioned block of our fixes rewritten: `version` < 1
+// Copies a restart file with every versioned block of our styles rewritten: `version` < 1
 // drops the header (the layout written before versions existed), else sets that version.
-static void rewrite_restart_versions(const std::string &from, const std::string &to, int version)
+// The first block is pair_style nscd's settings (LAMMPS writes force fields before fixes):
+// it has no size in front, and its layout before versions lacked the two reach values. It
+// gets `pair_version`.
+static void rewrite_restart_versions(const std::string &from, const std::string &to, int version,
+                                     int pair_version)
 {
   std::ifstream in(from, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -451,9 +455,15 @@ static void rewrite_restart_versions(const std::string &from, const std::string 
   const std::string marker(reinterpret_cast<const char *>(header), sizeof(header));
   int blocks = 0;
   for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
-    blocks++;
-    if (version >= 1) {
-      std::memcpy(&bytes[at + 4], &version, sizeof(int));
+    const bool pair = blocks++ == 0;
+    const int wanted = pair ? pair_version : version;
+    if (wanted >= 1) {
+      std::memcpy(&bytes[at + 4], &wanted, sizeof(int));
+      continue;
+    }
+    if (pair) {    // header, activation values, reach values -> activation values
+      bytes.erase(at + sizeof(header) + 2 * sizeof(double), 2 * sizeof(double));
+      bytes.erase(at, sizeof(header));
       continue;
     }
     int size;
@@ -462,7 +472,7 @@ static void rewrite_restart_versions(const std::string &from, const std::string 
     std::memcpy(&bytes[at - sizeof(int)], &size, sizeof(int));
     bytes.erase(at, sizeof(header));
   }
-  EXPECT_EQ(blocks, 4) << "fix nscd, two walls and the plate";
+  EXPECT_EQ(blocks, 5) << "pair nscd, fix nscd, two walls and the plate";
   std::ofstream(to, std::ios::binary) << bytes;
 }
 
@@ -482,8 +492,9 @@ TEST_F(NSCDTest, RestartBlocksAreVersionedAndOldBlocksStillRead)
   const double sweeps_straight = fix_value("solver", 0);
   const double pusher_x = fix_value("pusher", 3), plate_z = fix_value("plate", 0);
   if (rank() == 0) {
-    rewrite_restart_versions(scratch("new.restart"), scratch("old.restart"), 0);
-    rewrite_restart_versions(scratch("new.restart"), scratch("future.restart"), 2);
+    rewrite_restart_versions(scratch("new.restart"), scratch("old.restart"), 0, 0);
+    rewrite_restart_versions(scratch("new.restart"), scratch("future.restart"), 2, 1);
+    rewrite_restart_versions(scratch("new.restart"), scratch("future_pair.restart"), 1, 2);
   }
   MPI_Barrier(MPI_COMM_WORLD);
 
@@ -502,6 +513,11 @@ TEST_F(NSCDTest, RestartBlocksAreVersionedAndOldBlocksStillRead)
   EXPECT_NE(error_of(boundaries[0]).find("format 2"), std::string::npos);
   EXPECT_NE(error_of(boundaries[2]).find("format 2"), std::string::npos);
   EXPECT_NE(error_of(solver).find("format 2"), std::string::npos);
+
+  restart_instance();
+  const std::string message = error_of("read_restart " + scratch("future_pair.restart"));
+  EXPECT_NE(message.find("pair_style nscd"), std::string::npos) << message;
+  EXPECT_NE(message.find("format 2"), std::string::npos) << message;
 }
 
 // Minimisers and r-RESPA would skip or garble the Moreau-Jean step: refused by name.
