@@ -405,6 +405,9 @@ void FixWire::index_atoms()
   std::sort(atom_of_node.begin() + owned_nodes, atom_of_node.end(), by_tag);
   for (size_t k = 0; k < atom_of_node.size(); k++) node_of_atom[atom_of_node[k]] = (int) k;
   indexed_at = neighbor->lastcall;
+  int grains_here = atom_of_grain.empty() ? 0 : 1, grains = 0;
+  MPI_Allreduce(&grains_here, &grains, 1, MPI_INT, MPI_MAX, world);
+  grains_anywhere = grains != 0;
 
   wire::WireTopology &t = lib->step.topology;
   t.elements.clear();
@@ -482,6 +485,22 @@ void FixWire::store_nodes()
   communicate(Comm::node_position, false);    // ghosts at the final positions, for output
 }
 
+/* The local copy of node `tag` that is the other end of an element starting at local atom
+   i: the image nearest to i's position (elements are shorter than half the box), or -1.
+   The copy nearest to i among those present is not enough: near the edge of the ghost
+   region (a ghost cutoff above a quarter of a periodic box, 2 ranks along it) that image
+   may be absent while one a box length away is present, and an element from i to it
+   would lie along the wire and push on it. */
+int FixWire::element_partner(int i, tagint tag) const
+{
+  const int j = domain->closest_image(i, atom->map(tag));
+  if (j < 0) return -1;
+  double nearest[3];
+  domain->closest_image(atom->x[i], atom->x[j], nearest);
+  const double tolerance = 1e-9 * (domain->xprd + domain->yprd + domain->zprd);
+  return (vec3(nearest) - vec3(atom->x[j])).norm() <= tolerance ? j : -1;
+}
+
 /* The contact model's scene of the step. After a neighbour build: the node ids, which nodes
    may touch which boundary, and the copies of the elements (each element whose first node,
    or an image of it, is here, with the image of its second node closest to it); every step
@@ -502,14 +521,14 @@ void FixWire::update_scene(bool reindexed)
       if ((atom->mask[i] & groupbit) && (atom->mask[i] & lib->boundaries[b].groupbit)) scene.node_boundaries[k] |= 1u << b;
     const std::array<tagint, 2> from{atom->tag[i], 0}, to{atom->tag[i], MAXTAGINT};
     for (auto e = std::lower_bound(elements.begin(), elements.end(), from); e != elements.end() && *e <= to; ++e) {
-      const int j = domain->closest_image(i, atom->map((*e)[1]));
+      const int j = element_partner(i, (*e)[1]);
       if ((j < 0 || node_of_atom[j] < 0) && i < atom->nlocal)
         error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node ID "
                    "{}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
       if (j >= 0 && node_of_atom[j] >= 0) scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
     }
   }
-  if (!atom_of_grain.empty()) communicate(Comm::grain_velocity, false);    // ghost grains' v and omega
+  if (grains_anywhere) communicate(Comm::grain_velocity, false);    // ghost grains' v and omega
   scene.grains.resize(atom_of_grain.size());
   for (size_t g = 0; g < atom_of_grain.size(); g++) {
     const int i = atom_of_grain[g];
@@ -584,8 +603,9 @@ void FixWire::hand_forces()
     for (int d = 0; d < 3; d++) total[d] += b[d];
   }
   MPI_Allreduce(total, &diagnostics[GRAIN_FX], 3, MPI_DOUBLE, MPI_SUM, world);
-  if (grains > 0) communicate(Comm::grain_force, true);
-  for (int i = 0; i < atom->nlocal && grains > 0; i++) {
+  const bool exchanged = lib->contacts && grains_anywhere;    // the same on every rank
+  if (exchanged) communicate(Comm::grain_force, true);
+  for (int i = 0; i < atom->nlocal && exchanged; i++) {
     if (avec->shape[i] == 0) continue;
     add_to(atom->f[i], vec3(&grain_force_buffer[6 * (size_t) i]));
     add_to(avec->torque[i], vec3(&grain_force_buffer[6 * (size_t) i + 3]));

@@ -82,6 +82,7 @@ class FixWire : public Fix {
   // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.
   std::vector<int> node_of_atom, atom_of_node, atom_of_grain;
   int owned_nodes = 0;
+  bool grains_anywhere = false;    // on some rank, owned or ghost: the grain exchanges are collective
   bigint indexed_at = -1;       // neighbour build the indices belong to
   bool memories_on_every_rank = false;    // just read from a restart file
 
@@ -115,6 +116,7 @@ class FixWire : public Fix {
   void load_nodes();
   void store_nodes();
   void update_scene(bool reindexed);
+  int element_partner(int i, tagint tag) const;
   void hand_over_memories();
   void check_motion_within_skin();
   void hand_forces();

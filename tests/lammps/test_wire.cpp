@@ -1062,6 +1062,46 @@ TEST_F(WireOnBoundaryTest, WireRestsOnTheFloorAtTheSpringOverlapAndTheFloorCarri
   EXPECT_LT(kinetic_energy(1, kNodes), 1e-14);
 }
 
+// A ghost cutoff above a quarter of a periodic box puts two images of one node on a rank
+// (on 4 ranks, 2 x 2: the ranks beside the wire see it across both their y faces, those
+// along it across both x faces). Near the edge of the ghost region an element's other node
+// may be there only in the image a box length away; an element to that image lay along the
+// wire and pushed it up (nodes settled 0.04-0.06 above a floor for r_w = 0.02). The wire
+// must rest as on one rank: each node at r_w - m g / k_n, the floor carrying the weight, no
+// sideways drift.
+TEST_F(WireOnBoundaryTest, WireRestsOnTheFloorWhenARankHoldsTwoImagesOfItsNodes)
+{
+  boundary = "p p f";
+  const int n = 33;    // x from -4 to 4 in a box of +-5, ghost cutoff 3 > 10 / 4
+  std::vector<Point> atoms = straight_chain(n, 0.25, kMass, -4.0, kRadius);
+  for (Point &p : atoms) p.y = -2.5;
+  scene(atoms, n, true, 100.0, 0.25, 0.01);
+  commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0", "group wire id 1:" + std::to_string(n),
+            "group balls empty", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction " + num(kMu)});
+  wire_and_solver();
+  run("run 200");    // (the faulty element copies had thrown nodes off the floor by then)
+  for (int k = 1; k <= n; k++) ASSERT_LT(position(k)[2], 1.01 * kRadius) << "node " << k << " after 200 steps";
+  run("run 2800");
+  const double rest = kRadius - kMass / kN;
+  double lowest = INFINITY, highest = -INFINITY, mean_x = 0.0, mean_y = 0.0;
+  for (int k = 1; k <= n; k++) {
+    const std::vector<double> x = position(k);
+    lowest = std::min(lowest, x[2]), highest = std::max(highest, x[2]);
+    mean_x += x[0] / n, mean_y += x[1] / n;
+  }
+  std::printf("[ wire on floor, two images ] %d ranks: node z %.10g .. %.10g (closed form %.10g), floor %.10g "
+              "(weight %.10g), mean x %.3g y %.6g\n", ranks(), lowest, highest, rest, -fix_value("floor", 2),
+              n * kMass, mean_x, mean_y);
+  EXPECT_NEAR(lowest, rest, 1e-2 * kMass / kN);
+  EXPECT_NEAR(highest, rest, 1e-2 * kMass / kN);
+  EXPECT_NEAR(fix_value("floor", 2) / -(n * kMass), 1.0, 1e-6);
+  EXPECT_NEAR(mean_x, 0.0, 1e-9);    // no net sideways force: the start is symmetric about x = 0
+  EXPECT_NEAR(mean_y, -2.5, 1e-9);
+  EXPECT_EQ(fix_value("w", 11), n);    // wire-boundary contacts
+  EXPECT_EQ(fix_value("w", 3), 0.0);   // wire-wire: none along a straight wire
+  EXPECT_LT(kinetic_energy(1, n), 1e-14);
+}
+
 // The floor's friction (mu of fix nscd/wall, static = dynamic for the wire) holds the wire
 // on a slope below tan(theta) = mu, with the floor taking the wire's weight along the slope;
 // above it the wire slides with acceleration g (sin theta - mu cos theta).
