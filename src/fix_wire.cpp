@@ -118,14 +118,21 @@ FixWire::~FixWire()
 void FixWire::parse_option(int narg, char **arg, int &iarg)
 {
   const std::string key = arg[iarg];
-  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value", key);
-  const char *value = arg[iarg + 1];
+  const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
+  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, radius, damp, substeps, dt_sp, safety, "
+                         "contacts_per_node, skin";
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
       {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
       {"mu_s", &law.mu_s}, {"mu_d", &law.mu_d}, {"radius", &wire_radius}, {"damp", &node_damping},
       {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
       {"skin", &contact_skin}};
+  const bool known = plain.count(key) || key == "substeps";
+  if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
+  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
+  if (plain.count(value) || strcmp(value, "substeps") == 0)
+    error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
+               "(valid keywords: {}; each takes one value)", key, value, keywords);
   if (key == "substeps") {
     requested_dt_sp = 0.0;
     requested_substeps = strcmp(value, "auto") == 0 ? 0 : utils::inumeric(FLERR, value, false, lmp);
@@ -133,9 +140,6 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
     return;
   }
   const auto option = plain.find(key);
-  if (option == plain.end())
-    error->all(FLERR, "fix wire: unknown keyword '{}' (expected k_n, gamma_n, k_t, gamma_t, mu_s, "
-               "mu_d, radius, damp, substeps, dt_sp, safety, contacts_per_node, skin)", key);
   const double x = utils::numeric(FLERR, value, false, lmp);
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
@@ -159,6 +163,13 @@ void FixWire::init()
     if (other != this && dynamic_cast<FixWire *>(other))
       error->all(FLERR, "fix wire: only one fix wire may be defined ({} and {}); one fix handles "
                  "all wire nodes and their contacts", other->id, id);
+  if (update->whichflag == 2)
+    error->all(FLERR, "fix wire cannot take part in 'minimize': it integrates the wire nodes on its "
+               "own subcycle and has no minimizer forces; unfix it before minimize (or relax the wire "
+               "with a damped run, fix wire option 'damp')");
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "fix wire does not work with 'run_style {}': it subcycles the wire itself; use "
+               "'run_style verlet' (fix wire's option 'substeps' sets the wire's inner steps)", update->integrate_style);
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");

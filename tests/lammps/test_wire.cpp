@@ -12,6 +12,7 @@
 #include "fix.h"
 #include "force.h"
 #include "modify.h"
+#include "update.h"
 
 #include <algorithm>
 #include <array>
@@ -484,12 +485,38 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   run("group wire id 1:3");
   EXPECT_NE(error_of("fix w wire wire k_n -1").find("k_n"), std::string::npos);
   EXPECT_NE(error_of("fix w wire wire k_n 1 mu_s 0.2 mu_d 0.5").find("mu"), std::string::npos);
-  EXPECT_NE(error_of("fix w wire wire bogus 1").find("unknown keyword"), std::string::npos);
+  const std::string bogus = error_of("fix w wire wire radius 0.02 bogus 1");
+  EXPECT_NE(bogus.find("unknown keyword 'bogus'"), std::string::npos) << bogus;
+  EXPECT_NE(bogus.find("k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, radius"), std::string::npos) << bogus;
+  // a keyword where a value belongs names both and the list
+  const std::string early = error_of("fix w wire wire radius k_n 100");
+  EXPECT_NE(early.find("keyword 'radius' needs a value"), std::string::npos) << early;
+  EXPECT_NE(early.find("'k_n'"), std::string::npos) << early;
+  EXPECT_NE(early.find("valid keywords: k_n"), std::string::npos) << early;
+  const std::string last = error_of("fix w wire wire radius 0.02 k_n");
+  EXPECT_NE(last.find("keyword 'k_n' needs a value"), std::string::npos) << last;
   EXPECT_NE(error_of("fix w wire wire k_n 100").find("need a wire radius > 0"), std::string::npos);
   run("bond_style harmonic");
   run("bond_coeff 1 1 0.1");
   run("fix w wire wire");
   EXPECT_NE(error_of("run 1").find("bond_style wire"), std::string::npos);
+}
+
+// fix wire integrates the nodes on its own subcycle in post_force: under respa it would be
+// skipped and under minimize the nodes would not move; both are refused by name.
+TEST_F(WireTest, RespaAndMinimizeAreRefusedByName)
+{
+  scene(straight_chain(3, 0.1, 0.01), 3, true, 1e2, 0.1, 1.0);
+  commands({"group wire id 1:3", "fix w wire wire radius 0.02"});
+  const std::string minimize = error_of("minimize 0 0 10 10");
+  EXPECT_NE(minimize.find("fix wire cannot take part in 'minimize'"), std::string::npos) << minimize;
+  run("run_style respa 2 2");
+  const std::string respa = error_of("run 1");
+  EXPECT_NE(respa.find("fix wire does not work with 'run_style respa'"), std::string::npos) << respa;
+  EXPECT_NE(respa.find("run_style verlet"), std::string::npos) << respa;
+  run("run_style verlet");
+  run("run 1");    // and the ordinary integrator still runs
+  EXPECT_EQ(lmp->update->ntimestep, 1);
 }
 
 // ---------------------------------------------------------------- capstan
