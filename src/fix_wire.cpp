@@ -92,12 +92,19 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
   // lose all friction after its first slip).
   if (mu_s_given && !mu_d_given) law.mu_d = law.mu_s;
   if (mu_d_given && !mu_s_given) law.mu_s = law.mu_d;
+  // Wire-wire friction: the same pairing; neither given: the wire-grain values.
+  if (mu_ww_s < 0.0 && mu_ww_d < 0.0) mu_ww_s = law.mu_s, mu_ww_d = law.mu_d;
+  else if (mu_ww_d < 0.0) mu_ww_d = mu_ww_s;
+  else if (mu_ww_s < 0.0) mu_ww_s = mu_ww_d;
   if (law.k_n > 0.0) {    // k_n = 0: no contacts at all, the other coefficients unused
     try {
       wire::validate(law);
     } catch (std::exception &e) {
       error->all(FLERR, "fix wire: {}", e.what());
     }
+    if (mu_ww_d > mu_ww_s)
+      error->all(FLERR, "fix wire: wire-wire dynamic friction mu_ww_d = {} exceeds the static mu_ww_s = {}; "
+                 "use mu_ww_d <= mu_ww_s", mu_ww_d, mu_ww_s);
     if (!(wire_radius > 0.0))
       error->all(FLERR, "fix wire: contacts (k_n {}) need a wire radius > 0: elements of radius 0 "
                  "never touch; give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
@@ -119,14 +126,14 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
 {
   const std::string key = arg[iarg];
   const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
-  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, radius, damp, substeps, dt_sp, safety, "
-                         "contacts_per_node, skin";
+  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius, damp, substeps, "
+                         "dt_sp, safety, contacts_per_node, skin";
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
       {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
       {"mu_s", &law.mu_s}, {"mu_d", &law.mu_d}, {"radius", &wire_radius}, {"damp", &node_damping},
       {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
-      {"skin", &contact_skin}};
+      {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}};
   const bool known = plain.count(key) || key == "substeps";
   if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
@@ -289,6 +296,11 @@ void FixWire::make_contact_model()
                "SKIN bin' or fix wire's 'skin S'");
   std::vector<wire::StoredContact> memories = lib->contacts ? lib->contacts->memories() : lib->restored;
   lib->contacts = std::make_unique<wire::ContactModel>(lib->law, wire_radius, skin);
+  try {
+    lib->contacts->set_wire_wire_friction(mu_ww_s, mu_ww_d);
+  } catch (std::exception &e) {
+    error->all(FLERR, "fix wire: mu_ww_s {} and mu_ww_d {}: {}", mu_ww_s, mu_ww_d, e.what());
+  }
   lib->contacts->add_memories(memories);
   lib->restored.clear();
   lib->step.contacts = lib->contacts.get();

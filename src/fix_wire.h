@@ -69,6 +69,7 @@ class FixWire : public Fix {
 
   // options
   bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
+  double mu_ww_s = -1.0, mu_ww_d = -1.0;           // wire-wire friction; < 0: not given
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
   int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
   double requested_dt_sp = 0.0, safety = 0.5, contacts_per_node = 2.0;

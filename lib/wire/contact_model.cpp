@@ -49,7 +49,7 @@ bool ContactMemory::empty() const
 }
 
 ContactModel::ContactModel(const SoftContactLaw &law, double wire_radius, double skin)
-    : law_(law), radius_(wire_radius), skin_(skin)
+    : law_(law), wire_wire_law_(law), radius_(wire_radius), skin_(skin)
 {
   validate(law_);
   if (!(wire_radius > 0.0) || !std::isfinite(wire_radius) || !(skin > 0.0) || !std::isfinite(skin)) {
@@ -57,6 +57,19 @@ ContactModel::ContactModel(const SoftContactLaw &law, double wire_radius, double
     msg << "wire contacts: radius " << wire_radius << " and skin " << skin << " must be finite and > 0";
     throw std::invalid_argument(msg.str());
   }
+}
+
+void ContactModel::set_wire_wire_friction(double mu_s, double mu_d)
+{
+  SoftContactLaw law = law_;
+  law.mu_s = mu_s;
+  law.mu_d = mu_d;
+  try {
+    validate(law);
+  } catch (const std::invalid_argument &e) {
+    throw std::invalid_argument(std::string("wire-wire friction: ") + e.what());
+  }
+  wire_wire_law_ = law;
 }
 
 void ContactModel::set_elements(std::vector<std::array<std::int64_t, 2>> all_elements)
@@ -382,7 +395,7 @@ bool ContactModel::wire_contact(WirePair &p, WireWatch &watch, const std::vector
   }
   const LeverWeights wa = lever_weights(c->s_i), wb = lever_weights(c->s_j);
   const Vec3 v_rel = (wa.on_a * v[p.a1] + wa.on_b * v[p.a2]) - (wb.on_a * v[p.b1] + wb.on_b * v[p.b2]);
-  const SoftContactForce r = soft_contact_force(law_, c->normal, -c->gap, v_rel, dt, p.memory.spring[0]);
+  const SoftContactForce r = soft_contact_force(wire_wire_law_, c->normal, -c->gap, v_rel, dt, p.memory.spring[0]);
   p.memory.weight[0] = 1.0;
   f[p.a1] += wa.on_a * r.force;
   f[p.a2] += wa.on_b * r.force;

@@ -137,6 +137,10 @@ class ContactModel {
  public:
   // law: the wire's soft contact law (validated); skin > 0: margin of the candidate lists.
   ContactModel(const SoftContactLaw &law, double wire_radius, double skin);
+  // Friction between elements (static, dynamic), separate from that with the grains (by
+  // default the same); throws std::invalid_argument naming a bad value.
+  void set_wire_wire_friction(double mu_s, double mu_d);
+  const SoftContactLaw &wire_wire_law() const { return wire_wire_law_; }
 
   // Every element of the wire as (lower id, higher id), for the rule that elements joined
   // by a node or by one element do not touch.
@@ -205,6 +209,7 @@ class ContactModel {
   };
 
   SoftContactLaw law_;
+  SoftContactLaw wire_wire_law_;    // law_ with the wire-wire friction
   double radius_, skin_;
   std::vector<std::array<std::int64_t, 2>> all_elements_;
   ContactScene scene_;

@@ -487,7 +487,7 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   EXPECT_NE(error_of("fix w wire wire k_n 1 mu_s 0.2 mu_d 0.5").find("mu"), std::string::npos);
   const std::string bogus = error_of("fix w wire wire radius 0.02 bogus 1");
   EXPECT_NE(bogus.find("unknown keyword 'bogus'"), std::string::npos) << bogus;
-  EXPECT_NE(bogus.find("k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, radius"), std::string::npos) << bogus;
+  EXPECT_NE(bogus.find("k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius"), std::string::npos) << bogus;
   // a keyword where a value belongs names both and the list
   const std::string early = error_of("fix w wire wire radius k_n 100");
   EXPECT_NE(early.find("keyword 'radius' needs a value"), std::string::npos) << early;
@@ -670,6 +670,36 @@ TEST_F(CrossingWiresTest, PressedWireStaysAtTheSpringOverlapSticksUntilMuSAndSli
   EXPECT_GT(x[2] - x[1], x[1] - x[0]);    // still sliding, faster and faster
   EXPECT_NEAR(friction / (kMuD * kNormal), 1.0, 1e-3);
   EXPECT_LT(deepest, 1.001 * kNormal / kN);    // no interpenetration beyond the spring's
+}
+
+// Wire-wire friction of its own (mu_ww_s 0.2, mu_ww_d 0.1) below the wire-grain one (0.5,
+// 0.3): B holds under 0.15 f_n, and under 0.25 f_n (which the wire-grain friction would
+// hold) it slides with the friction force mu_ww_d f_n.
+TEST_F(CrossingWiresTest, WireWireFrictionIsItsOwnAndSetsTheSlidingThreshold)
+{
+  crossing("mu_s 0.5 mu_d 0.3 mu_ww_s 0.2 mu_ww_d 0.1");
+  run("run 300");
+  run("variable fx equal ramp(0," + num(0.075 * kNormal) + ")");    // to 0.15 f_n, slowly
+  run("run 300");
+  const double held = b_position(0);
+  run("run 200");
+  EXPECT_LT(std::abs(held), 0.15 * kNormal / 1e4 * 1.01);    // the tangential spring's stretch only
+  EXPECT_NEAR(b_position(0), held, 1e-6);    // (free, it would move by F t^2 / 2m = 0.15)
+  const double F = 0.25 * kNormal, T = 0.05, m = 2 * kMass;
+  pull(F);
+  run("run 20");
+  double x[3];
+  for (double &xi : x) {
+    xi = b_position(0);
+    run("run 50");
+  }
+  const double a = (x[2] - 2 * x[1] + x[0]) / (T * T), friction = F - m * a;
+  std::printf("[ crossing, mu_ww ] held at %.3g under 0.15 f_n; sliding under 0.25 f_n: friction / f_n = %.6f "
+              "(mu_ww_d 0.1)\n", held, friction / kNormal);
+  EXPECT_GT(x[2] - x[1], x[1] - x[0]);    // sliding, faster and faster
+  EXPECT_NEAR(friction / (0.1 * kNormal), 1.0, 1e-3);
+  EXPECT_NE(error_of("fix w wire wire radius 0.05 k_n 1e4 mu_ww_s 0.1 mu_ww_d 0.2").find("mu_ww_d = 0.2 exceeds"),
+            std::string::npos);
 }
 
 // mu_s alone means mu_d = mu_s: after a slip, a pull below mu_s f_n lets the wire stick

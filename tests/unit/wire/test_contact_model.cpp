@@ -133,6 +133,51 @@ TEST(WireWireContact, CrossingElementsPushApartByTheOverlapSplitByTheLeverRule)
   EXPECT_NEAR(t.energy, 0.5 * k_n * overlap * overlap, 1e-15);
 }
 
+// Two crossing elements pressed together (f_n = k_n overlap) and the upper one dragged
+// along the lower: the friction force is k_t times the drag while below mu_s f_n, drops to
+// mu_d f_n once it slips, with the wire-wire coefficients (set apart from the wire-grain
+// ones, which would hold up to 0.5 f_n); a model left at its defaults uses the wire-grain
+// coefficients for both.
+TEST(WireWireContact, SlidingThresholdFollowsTheWireWireFriction)
+{
+  const double r_w = 0.05, overlap = 2e-3, dt = 1e-5;
+  SoftContactLaw law = sticky_law();    // wire-grain mu_s = mu_d = 0.5
+  const double fn = law.k_n * overlap;
+  // The x force on the lower element after dragging the upper one by `drag` along x, with
+  // the wire-wire friction (mu_s, mu_d) if `separate`, else left at its default.
+  auto friction_after = [&](bool separate, double drag) {
+    ContactModel model(law, r_w, 0.1);
+    if (separate) model.set_wire_wire_friction(0.2, 0.1);
+    std::vector<Vec3> x = {Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), Vec3(0, -0.5, 2 * r_w - overlap),
+                           Vec3(0, 0.5, 2 * r_w - overlap)};
+    ContactScene scene = test::chain_scene(x, {});
+    scene.elements = {{0, 1, 1, 2, true}, {2, 3, 3, 4, true}};
+    model.set_elements({{1, 2}, {3, 4}});
+    model.begin_step(scene, 1e-3, false);
+    const int steps = 200;
+    const Vec3 u(drag / (steps * dt), 0, 0);
+    std::vector<Vec3> v = {Vec3::Zero(), Vec3::Zero(), u, u}, f;
+    GrainForceAccumulator none;
+    none.reset(0);
+    for (int k = 0; k < steps; ++k) {
+      x[2] += u * dt, x[3] += u * dt;
+      f.assign(4, Vec3::Zero());
+      model.add_forces(x, v, k * dt, dt, f, none);
+    }
+    return (f[0] + f[1]).x();
+  };
+  const bool separate = true, same = false;
+  const double slip = 0.2 * fn / law.k_t;    // drag at which the wire-wire contact slips
+  EXPECT_NEAR(friction_after(separate, 0.9 * slip) / fn, 0.18, 1e-9);    // sticking: k_t drag
+  EXPECT_NEAR(friction_after(separate, 1.1 * slip) / fn, 0.1, 1e-9);     // slipped: mu_d f_n
+  EXPECT_NEAR(friction_after(separate, 20.0 * slip) / fn, 0.1, 1e-9);
+  EXPECT_NEAR(friction_after(same, 1.1 * slip) / fn, 0.22, 1e-9);        // mu_s 0.5: still sticking
+  EXPECT_NEAR(friction_after(same, 20.0 * slip) / fn, 0.5, 1e-9);
+  ContactModel model(law, r_w, 0.1);
+  EXPECT_THROW(model.set_wire_wire_friction(0.1, 0.2), std::invalid_argument);    // mu_d > mu_s
+  EXPECT_THROW(model.set_wire_wire_friction(-0.1, 0.0), std::invalid_argument);
+}
+
 // Elements sharing a node or joined by one element never touch (the wire's own bending),
 // however close: a hairpin of four elements folded flat.
 TEST(WireWireContact, ElementsJoinedByANodeOrAnElementDoNotTouch)
