@@ -178,6 +178,41 @@ TEST(WireWireContact, SlidingThresholdFollowsTheWireWireFriction)
   EXPECT_THROW(model.set_wire_wire_friction(-0.1, 0.0), std::invalid_argument);
 }
 
+// Recorded contact points (for compute wire/contacts): the crossing of two elements is one
+// point, at the crossing, normal from the upper element to the lower one (the computing
+// one), its normal force averaged over the step's substeps: closed in the first of two
+// substeps only, it shows half of k_n overlap.
+TEST(WireWireContact, RecordedPointCarriesTheForceAveragedOverTheSubsteps)
+{
+  const double r_w = 0.05, overlap = 2e-3, k_n = 1e3;
+  ContactModel model(test::frictionless(k_n), r_w, 0.1);
+  std::vector<Vec3> x = {Vec3(-0.25, 0, 0), Vec3(0.75, 0, 0), Vec3(0, -0.6, 2 * r_w - overlap),
+                         Vec3(0, 0.4, 2 * r_w - overlap)};
+  ContactScene scene = test::chain_scene(x, {});
+  scene.elements = {{0, 1, 1, 2, true}, {2, 3, 3, 4, true}};
+  model.set_elements({{1, 2}, {3, 4}});
+  model.record_contacts(true);
+  model.begin_step(scene, 1e-3, false);
+  std::vector<Vec3> f(4, Vec3::Zero()), v(4, Vec3::Zero());
+  GrainForceAccumulator none;
+  none.reset(0);
+  model.add_forces(x, v, 0.0, 1e-5, f, none);
+  x[2].z() += 2 * overlap, x[3].z() += 2 * overlap;    // lifted off
+  model.add_forces(x, v, 1e-5, 1e-5, f, none);
+  const std::vector<ContactRecord> records = model.contact_records();
+  ASSERT_EQ(records.size(), 1u);
+  const ContactRecord &c = records[0];
+  EXPECT_EQ(c.kind, ContactRecord::wire_wire);
+  EXPECT_EQ(c.key, (ContactKey{1, 2, 3, 4}));
+  EXPECT_NEAR(c.normal_force, 0.5 * k_n * overlap, 1e-12);
+  EXPECT_NEAR(c.overlap, overlap, 1e-12);    // at its last evaluation while closed
+  EXPECT_NEAR((c.point - Vec3(0, 0, r_w - overlap / 2)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((c.normal - Vec3(0, 0, -1)).norm(), 0.0, 1e-12);
+  EXPECT_FALSE(c.sliding);
+  model.begin_step(scene, 1e-3, false);    // a new step starts empty
+  EXPECT_TRUE(model.contact_records().empty());
+}
+
 // Elements sharing a node or joined by one element never touch (the wire's own bending),
 // however close: a hairpin of four elements folded flat.
 TEST(WireWireContact, ElementsJoinedByANodeOrAnElementDoNotTouch)
