@@ -302,6 +302,7 @@ void FixWire::make_contact_model()
     error->all(FLERR, "fix wire: mu_ww_s {} and mu_ww_d {}: {}", mu_ww_s, mu_ww_d, e.what());
   }
   lib->contacts->add_memories(memories);
+  lib->contacts->record_contacts(contacts_recorded);
   lib->restored.clear();
   lib->step.contacts = lib->contacts.get();
 }
@@ -679,6 +680,34 @@ void FixWire::post_run()
                         c.grain_evaluations());
   }
   utils::logmesg(lmp, text);
+}
+
+/* ---------------------------------------------------------------------- output */
+
+/* Called by the compute's init(), which LAMMPS may run before or after this fix's. */
+void FixWire::record_contacts()
+{
+  contacts_recorded = true;
+  if (lib->contacts) lib->contacts->record_contacts(true);
+}
+
+/* id1 id2 other kind px py pz nx ny nz fn ftx fty ftz overlap status; a boundary is -k,
+   k counting the wall and plate fixes this fix sees in the order they were defined. */
+std::vector<double> FixWire::contact_rows() const
+{
+  std::vector<double> rows;
+  if (!lib->contacts) return rows;
+  for (const wire::ContactRecord &c : lib->contacts->contact_records()) {
+    double other = (double) c.key[2];
+    for (size_t b = 0; b < lib->boundaries.size() && c.kind == wire::ContactRecord::wire_boundary; b++)
+      if (lib->boundaries[b].link.id == c.key[2]) other = -(double) (b + 1);
+    const double row[kContactColumns] = {
+        (double) c.key[0], (double) c.key[1], other, (double) c.kind, c.point.x(), c.point.y(), c.point.z(),
+        c.normal.x(), c.normal.y(), c.normal.z(), c.normal_force, c.tangential_force.x(), c.tangential_force.y(),
+        c.tangential_force.z(), c.overlap, c.sliding ? 1.0 : 0.0};
+    rows.insert(rows.end(), row, row + kContactColumns);
+  }
+  return rows;
 }
 
 /* ---------------------------------------------------------------------- comm */

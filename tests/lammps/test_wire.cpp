@@ -1159,6 +1159,65 @@ TEST_F(WireOnBoundaryTest, WireRestsOnTheFloorWhenARankHoldsTwoImagesOfItsNodes)
   EXPECT_LT(kinetic_energy(1, n), 1e-14);
 }
 
+// compute wire/contacts: at rest on the floor each node is one row (kind 3, the floor as
+// -1), carrying its weight along the floor's normal, at the overlap m g / k_n, sticking;
+// as many rows as fix wire counts contacts, each once over the ranks.
+TEST_F(WireOnBoundaryTest, WireContactsComputeGivesEachNodeOnTheFloorItsWeight)
+{
+  wire_on_floor();
+  wire_and_solver();
+  run("compute wc all wire/contacts");
+  EXPECT_TRUE(local_rows("wc").empty());    // before any step
+  run("run 3000");
+  const std::vector<std::vector<double>> rows = local_rows("wc");
+  ASSERT_EQ((int) rows.size(), kNodes);
+  EXPECT_EQ(fix_value("w", 11), (double) rows.size());
+  double total = 0.0;
+  for (int k = 0; k < kNodes; k++) {
+    const std::vector<double> &r = rows[k];
+    EXPECT_EQ(r[0], k + 1.0);    // the node (rows sorted)
+    EXPECT_EQ(r[1], 0.0);
+    EXPECT_EQ(r[2], -1.0);       // the first boundary fix
+    EXPECT_EQ(r[3], 3.0);        // wire-boundary
+    EXPECT_NEAR(r[4], position(k + 1)[0], 1e-12);
+    EXPECT_NEAR(r[6], -0.5 * kMass / kN, 1e-9);    // midway between node sphere and floor
+    EXPECT_NEAR(r[9], 1.0, 1e-12);                 // normal from the floor to the wire
+    EXPECT_NEAR(r[10], kMass, 1e-6 * kMass) << "node " << k + 1;
+    EXPECT_NEAR(std::hypot(r[11], r[12], r[13]), 0.0, 1e-9 * kMass);
+    EXPECT_NEAR(r[14], kMass / kN, 1e-3 * kMass / kN);
+    EXPECT_EQ(r[15], 0.0);    // sticking
+    total += r[10];
+  }
+  EXPECT_NEAR(total, -fix_value("floor", 2), 1e-9 * total);    // as the floor reports it
+}
+
+// Elements lying on a grain's face: every row is a wire-grain contact with that grain, two
+// ends per element, and the rows' forces on the wire, fn n + f_t, sum to minus the force
+// fix wire hands to the grains (both averaged over the substeps), which is the wire's weight.
+TEST_F(WireOnBoundaryTest, WireContactsComputeSumsToTheForceOnTheGrain)
+{
+  wire_on_floor(false, 0.0, kRadius, true);    // on the top face of a fixed slab, atom kNodes + 2
+  wire_and_solver();
+  run("compute wc all wire/contacts");
+  run("run 3000");
+  const std::vector<std::vector<double>> rows = local_rows("wc");
+  ASSERT_FALSE(rows.empty());
+  double sum[3] = {0.0, 0.0, 0.0};
+  for (const std::vector<double> &r : rows) {
+    EXPECT_EQ(r[2], kNodes + 2.0);    // the slab
+    EXPECT_EQ(r[3], 1.0);             // wire-grain
+    EXPECT_EQ(r[1], r[0] + 1.0);      // an element's two nodes
+    EXPECT_NEAR(r[9], 1.0, 1e-9);     // normal up, out of the face
+    for (int d = 0; d < 3; d++) sum[d] += r[10] * r[7 + d] + r[11 + d];
+  }
+  std::printf("[ wire contacts on a face ] %zu rows, sum of forces on the wire %.12g %.12g %.12g, fix wire on "
+              "grains %.12g, weight %.12g\n", rows.size(), sum[0], sum[1], sum[2], fix_value("w", 9), kNodes * kMass);
+  EXPECT_EQ(rows.size() % 2, 0u);    // two stretch ends per element on the face
+  EXPECT_GE(fix_value("w", 4) * 2, (double) rows.size());    // fix wire counts elements
+  for (int d = 0; d < 3; d++) EXPECT_NEAR(sum[d], -fix_value("w", 7 + d), 1e-12) << "axis " << d;
+  EXPECT_NEAR(sum[2], kNodes * kMass, 1e-6 * kNodes * kMass);
+}
+
 // The floor's friction (mu of fix nscd/wall, static = dynamic for the wire) holds the wire
 // on a slope below tan(theta) = mu, with the floor taking the wire's weight along the slope;
 // above it the wire slides with acceleration g (sin theta - mu cos theta).
