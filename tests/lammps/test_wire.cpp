@@ -702,6 +702,26 @@ TEST_F(CrossingWiresTest, WireWireFrictionIsItsOwnAndSetsTheSlidingThreshold)
             std::string::npos);
 }
 
+// compute wire/contacts on a wire-wire contact: one row, element 1-2 against the element
+// whose first node is 3, the normal from B down to A, fn = the press, and fix wire's count.
+TEST_F(CrossingWiresTest, WireContactsComputeReportsTheCrossingOnce)
+{
+  crossing();
+  run("compute wc all wire/contacts");
+  run("run 300");
+  const std::vector<std::vector<double>> rows = local_rows("wc");
+  ASSERT_EQ(rows.size(), 1u);
+  const std::vector<double> &r = rows[0];
+  EXPECT_EQ(fix_value("w", 3), 1.0);
+  EXPECT_EQ(r[0], 1.0);
+  EXPECT_EQ(r[1], 2.0);
+  EXPECT_EQ(r[2], 3.0);
+  EXPECT_EQ(r[3], 2.0);    // wire-wire
+  EXPECT_NEAR(r[9], -1.0, 1e-9);
+  EXPECT_NEAR(r[10], kNormal, 1e-3 * kNormal);    // (still settling: 2e-4 after 300 steps)
+  EXPECT_NEAR(r[14], kNormal / kN, 1e-3 * kNormal / kN);
+}
+
 // mu_s alone means mu_d = mu_s: after a slip, a pull below mu_s f_n lets the wire stick
 // again (with mu_d left at 0 it would slide on without friction).
 // The friction history of a sticking contact follows its computing node to another rank:
