@@ -92,12 +92,19 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
   // lose all friction after its first slip).
   if (mu_s_given && !mu_d_given) law.mu_d = law.mu_s;
   if (mu_d_given && !mu_s_given) law.mu_s = law.mu_d;
+  // Wire-wire friction: the same pairing; neither given: the wire-grain values.
+  if (mu_ww_s < 0.0 && mu_ww_d < 0.0) mu_ww_s = law.mu_s, mu_ww_d = law.mu_d;
+  else if (mu_ww_d < 0.0) mu_ww_d = mu_ww_s;
+  else if (mu_ww_s < 0.0) mu_ww_s = mu_ww_d;
   if (law.k_n > 0.0) {    // k_n = 0: no contacts at all, the other coefficients unused
     try {
       wire::validate(law);
     } catch (std::exception &e) {
       error->all(FLERR, "fix wire: {}", e.what());
     }
+    if (mu_ww_d > mu_ww_s)
+      error->all(FLERR, "fix wire: wire-wire dynamic friction mu_ww_d = {} exceeds the static mu_ww_s = {}; "
+                 "use mu_ww_d <= mu_ww_s", mu_ww_d, mu_ww_s);
     if (!(wire_radius > 0.0))
       error->all(FLERR, "fix wire: contacts (k_n {}) need a wire radius > 0: elements of radius 0 "
                  "never touch; give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
@@ -118,14 +125,21 @@ FixWire::~FixWire()
 void FixWire::parse_option(int narg, char **arg, int &iarg)
 {
   const std::string key = arg[iarg];
-  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value", key);
-  const char *value = arg[iarg + 1];
+  const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
+  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius, damp, substeps, "
+                         "dt_sp, safety, contacts_per_node, skin";
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
       {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
       {"mu_s", &law.mu_s}, {"mu_d", &law.mu_d}, {"radius", &wire_radius}, {"damp", &node_damping},
       {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
-      {"skin", &contact_skin}};
+      {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}};
+  const bool known = plain.count(key) || key == "substeps";
+  if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
+  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
+  if (plain.count(value) || strcmp(value, "substeps") == 0)
+    error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
+               "(valid keywords: {}; each takes one value)", key, value, keywords);
   if (key == "substeps") {
     requested_dt_sp = 0.0;
     const bool automatic = strcmp(value, "auto") == 0;    // 0 inside: choose
@@ -134,9 +148,6 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
     return;
   }
   const auto option = plain.find(key);
-  if (option == plain.end())
-    error->all(FLERR, "fix wire: unknown keyword '{}' (expected k_n, gamma_n, k_t, gamma_t, mu_s, "
-               "mu_d, radius, damp, substeps, dt_sp, safety, contacts_per_node, skin)", key);
   const double x = utils::numeric(FLERR, value, false, lmp);
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
@@ -160,6 +171,13 @@ void FixWire::init()
     if (other != this && dynamic_cast<FixWire *>(other))
       error->all(FLERR, "fix wire: only one fix wire may be defined ({} and {}); one fix handles "
                  "all wire nodes and their contacts", other->id, id);
+  if (update->whichflag == 2)
+    error->all(FLERR, "fix wire cannot take part in 'minimize': it integrates the wire nodes on its "
+               "own subcycle and has no minimizer forces; unfix it before minimize (or relax the wire "
+               "with a damped run, fix wire option 'damp')");
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "fix wire does not work with 'run_style {}': it subcycles the wire itself; use "
+               "'run_style verlet' (fix wire's option 'substeps' sets the wire's inner steps)", update->integrate_style);
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");
@@ -279,7 +297,13 @@ void FixWire::make_contact_model()
                "SKIN bin' or fix wire's 'skin S'");
   std::vector<wire::StoredContact> memories = lib->contacts ? lib->contacts->memories() : lib->restored;
   lib->contacts = std::make_unique<wire::ContactModel>(lib->law, wire_radius, skin);
+  try {
+    lib->contacts->set_wire_wire_friction(mu_ww_s, mu_ww_d);
+  } catch (std::exception &e) {
+    error->all(FLERR, "fix wire: mu_ww_s {} and mu_ww_d {}: {}", mu_ww_s, mu_ww_d, e.what());
+  }
   lib->contacts->add_memories(memories);
+  lib->contacts->record_contacts(contacts_recorded);
   lib->restored.clear();
   lib->step.contacts = lib->contacts.get();
 }
@@ -406,6 +430,9 @@ void FixWire::index_atoms()
   std::sort(atom_of_node.begin() + owned_nodes, atom_of_node.end(), by_tag);
   for (size_t k = 0; k < atom_of_node.size(); k++) node_of_atom[atom_of_node[k]] = (int) k;
   indexed_at = neighbor->lastcall;
+  int grains_here = atom_of_grain.empty() ? 0 : 1, grains = 0;
+  MPI_Allreduce(&grains_here, &grains, 1, MPI_INT, MPI_MAX, world);
+  grains_anywhere = grains != 0;
 
   wire::WireTopology &t = lib->step.topology;
   t.elements.clear();
@@ -483,6 +510,22 @@ void FixWire::store_nodes()
   communicate(Comm::node_position, false);    // ghosts at the final positions, for output
 }
 
+/* The local copy of node `tag` that is the other end of an element starting at local atom
+   i: the image nearest to i's position (elements are shorter than half the box), or -1.
+   The copy nearest to i among those present is not enough: near the edge of the ghost
+   region (a ghost cutoff above a quarter of a periodic box, 2 ranks along it) that image
+   may be absent while one a box length away is present, and an element from i to it
+   would lie along the wire and push on it. */
+int FixWire::element_partner(int i, tagint tag) const
+{
+  const int j = domain->closest_image(i, atom->map(tag));
+  if (j < 0) return -1;
+  double nearest[3];
+  domain->closest_image(atom->x[i], atom->x[j], nearest);
+  const double tolerance = 1e-9 * (domain->xprd + domain->yprd + domain->zprd);
+  return (vec3(nearest) - vec3(atom->x[j])).norm() <= tolerance ? j : -1;
+}
+
 /* The contact model's scene of the step. After a neighbour build: the node ids, which nodes
    may touch which boundary, and the copies of the elements (each element whose first node,
    or an image of it, is here, with the image of its second node closest to it); every step
@@ -503,14 +546,14 @@ void FixWire::update_scene(bool reindexed)
       if ((atom->mask[i] & groupbit) && (atom->mask[i] & lib->boundaries[b].groupbit)) scene.node_boundaries[k] |= 1u << b;
     const std::array<tagint, 2> from{atom->tag[i], 0}, to{atom->tag[i], MAXTAGINT};
     for (auto e = std::lower_bound(elements.begin(), elements.end(), from); e != elements.end() && *e <= to; ++e) {
-      const int j = domain->closest_image(i, atom->map((*e)[1]));
+      const int j = element_partner(i, (*e)[1]);
       if ((j < 0 || node_of_atom[j] < 0) && i < atom->nlocal)
         error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node ID "
                    "{}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
       if (j >= 0 && node_of_atom[j] >= 0) scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
     }
   }
-  if (!atom_of_grain.empty()) communicate(Comm::grain_velocity, false);    // ghost grains' v and omega
+  if (grains_anywhere) communicate(Comm::grain_velocity, false);    // ghost grains' v and omega
   scene.grains.resize(atom_of_grain.size());
   for (size_t g = 0; g < atom_of_grain.size(); g++) {
     const int i = atom_of_grain[g];
@@ -585,8 +628,9 @@ void FixWire::hand_forces()
     for (int d = 0; d < 3; d++) total[d] += b[d];
   }
   MPI_Allreduce(total, &diagnostics[GRAIN_FX], 3, MPI_DOUBLE, MPI_SUM, world);
-  if (grains > 0) communicate(Comm::grain_force, true);
-  for (int i = 0; i < atom->nlocal && grains > 0; i++) {
+  const bool exchanged = lib->contacts && grains_anywhere;    // the same on every rank
+  if (exchanged) communicate(Comm::grain_force, true);
+  for (int i = 0; i < atom->nlocal && exchanged; i++) {
     if (avec->shape[i] == 0) continue;
     add_to(atom->f[i], vec3(&grain_force_buffer[6 * (size_t) i]));
     add_to(avec->torque[i], vec3(&grain_force_buffer[6 * (size_t) i + 3]));
@@ -637,6 +681,34 @@ void FixWire::post_run()
                         c.grain_evaluations());
   }
   utils::logmesg(lmp, text);
+}
+
+/* ---------------------------------------------------------------------- output */
+
+/* Called by the compute's init(), which LAMMPS may run before or after this fix's. */
+void FixWire::record_contacts()
+{
+  contacts_recorded = true;
+  if (lib->contacts) lib->contacts->record_contacts(true);
+}
+
+/* id1 id2 other kind px py pz nx ny nz fn ftx fty ftz overlap status; a boundary is -k,
+   k counting the wall and plate fixes this fix sees in the order they were defined. */
+std::vector<double> FixWire::contact_rows() const
+{
+  std::vector<double> rows;
+  if (!lib->contacts) return rows;
+  for (const wire::ContactRecord &c : lib->contacts->contact_records()) {
+    double other = (double) c.key[2];
+    for (size_t b = 0; b < lib->boundaries.size() && c.kind == wire::ContactRecord::wire_boundary; b++)
+      if (lib->boundaries[b].link.id == c.key[2]) other = -(double) (b + 1);
+    const double row[kContactColumns] = {
+        (double) c.key[0], (double) c.key[1], other, (double) c.kind, c.point.x(), c.point.y(), c.point.z(),
+        c.normal.x(), c.normal.y(), c.normal.z(), c.normal_force, c.tangential_force.x(), c.tangential_force.y(),
+        c.tangential_force.z(), c.overlap, c.sliding ? 1.0 : 0.0};
+    rows.insert(rows.end(), row, row + kContactColumns);
+  }
+  return rows;
 }
 
 /* ---------------------------------------------------------------------- comm */

@@ -55,6 +55,13 @@ class FixWire : public Fix {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
+  // compute wire/contacts: recording of contact points from the next step on, and the
+  // points of the last step computed on this rank, kContactColumns numbers a row
+  // (doc/compute_wire_contacts.md).
+  static constexpr int kContactColumns = 16;
+  void record_contacts();
+  std::vector<double> contact_rows() const;
+
   double substep() const;
   int substeps() const;
 
@@ -69,6 +76,8 @@ class FixWire : public Fix {
 
   // options
   bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
+  double mu_ww_s = -1.0, mu_ww_d = -1.0;           // wire-wire friction; < 0: not given
+  bool contacts_recorded = false;                  // for compute wire/contacts
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
   int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
   double requested_dt_sp = 0.0, safety = 0.5, contacts_per_node = 2.0;
@@ -82,6 +91,7 @@ class FixWire : public Fix {
   // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.
   std::vector<int> node_of_atom, atom_of_node, atom_of_grain;
   int owned_nodes = 0;
+  bool grains_anywhere = false;    // on some rank, owned or ghost: the grain exchanges are collective
   bigint indexed_at = -1;       // neighbour build the indices belong to
   bool memories_on_every_rank = false;    // just read from a restart file
 
@@ -115,6 +125,7 @@ class FixWire : public Fix {
   void load_nodes();
   void store_nodes();
   void update_scene(bool reindexed);
+  int element_partner(int i, tagint tag) const;
   void hand_over_memories();
   void check_motion_within_skin();
   void hand_forces();

@@ -49,7 +49,7 @@ bool ContactMemory::empty() const
 }
 
 ContactModel::ContactModel(const SoftContactLaw &law, double wire_radius, double skin)
-    : law_(law), radius_(wire_radius), skin_(skin)
+    : law_(law), wire_wire_law_(law), radius_(wire_radius), skin_(skin)
 {
   validate(law_);
   if (!(wire_radius > 0.0) || !std::isfinite(wire_radius) || !(skin > 0.0) || !std::isfinite(skin)) {
@@ -57,6 +57,19 @@ ContactModel::ContactModel(const SoftContactLaw &law, double wire_radius, double
     msg << "wire contacts: radius " << wire_radius << " and skin " << skin << " must be finite and > 0";
     throw std::invalid_argument(msg.str());
   }
+}
+
+void ContactModel::set_wire_wire_friction(double mu_s, double mu_d)
+{
+  SoftContactLaw law = law_;
+  law.mu_s = mu_s;
+  law.mu_d = mu_d;
+  try {
+    validate(law);
+  } catch (const std::invalid_argument &e) {
+    throw std::invalid_argument(std::string("wire-wire friction: ") + e.what());
+  }
+  wire_wire_law_ = law;
 }
 
 void ContactModel::set_elements(std::vector<std::array<std::int64_t, 2>> all_elements)
@@ -95,6 +108,9 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
     }
     for (size_t k = 0; k < grain_pairs_.size(); ++k) grain_watch_[k].threshold -= moved[grain_pairs_[k].grain];
   }
+  records_.clear();
+  record_of_.clear();
+  recorded_substeps_ = 0;
   boundary_travel_ += fastest_boundary_ * step_;    // the boundaries moved over the last step
   step_ = dt_step;
   scene_ = std::move(scene);
@@ -301,6 +317,7 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
                                        std::vector<Vec3> &f, GrainForceAccumulator &reactions)
 {
   if (lists_outdated(x, tau)) rebuild(x, tau);
+  recorded_substeps_ += recording_ ? 1 : 0;
   ContactTotals out;
   const double *moved = moved_.data();
   for (size_t k = 0; k < grain_watch_.size(); ++k) {
@@ -352,6 +369,7 @@ bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vec
     const Vec3 v_rel = lever.on_a * v[p.a] + lever.on_b * v[p.b] - (g.velocity + g.angular_velocity.cross(arm));
     const SoftContactForce r = soft_contact_force(law_, point.normal, -point.gap, v_rel, dt, spring[k]);
     const Vec3 force = weight * r.force;
+    if (recording_) record(p.key, ContactRecord::wire_grain, k, point, weight, r);
     f[p.a] += lever.on_a * force;
     f[p.b] += lever.on_b * force;
     reactions.add(p.grain, -force, arm);
@@ -382,8 +400,9 @@ bool ContactModel::wire_contact(WirePair &p, WireWatch &watch, const std::vector
   }
   const LeverWeights wa = lever_weights(c->s_i), wb = lever_weights(c->s_j);
   const Vec3 v_rel = (wa.on_a * v[p.a1] + wa.on_b * v[p.a2]) - (wb.on_a * v[p.b1] + wb.on_b * v[p.b2]);
-  const SoftContactForce r = soft_contact_force(law_, c->normal, -c->gap, v_rel, dt, p.memory.spring[0]);
+  const SoftContactForce r = soft_contact_force(wire_wire_law_, c->normal, -c->gap, v_rel, dt, p.memory.spring[0]);
   p.memory.weight[0] = 1.0;
+  if (recording_) record(p.key, ContactRecord::wire_wire, 0, *c, 1.0, r);
   f[p.a1] += wa.on_a * r.force;
   f[p.a2] += wa.on_b * r.force;
   f[p.b1] -= wb.on_a * r.force;
@@ -409,11 +428,47 @@ bool ContactModel::boundary_contact(BoundaryPair &p, const std::vector<Vec3> &x,
   const Vec3 v_rel = v[p.node] - b.boundary->surface_velocity();
   const SoftContactForce r = soft_contact_force(b.law, c.normal, -c.gap, v_rel, dt, p.memory.spring[0]);
   p.memory.weight[0] = 1.0;
+  if (recording_) record(p.key, ContactRecord::wire_boundary, 0, SegmentContact{c.point, c.normal, c.gap}, 1.0, r);
   f[p.node] += r.force;
   reactions.add(static_cast<int>(scene_.grains.size()) + p.boundary, -r.force, Vec3::Zero());
   totals.energy += r.elastic_energy;
   totals.normal_force += r.normal_force;
   return true;
+}
+
+void ContactModel::record(const ContactKey &key, int kind, int end, const SegmentContact &point, double weight,
+                          const SoftContactForce &r)
+{
+  auto found = record_of_.try_emplace(key, std::array<int, 2>{-1, -1}).first;
+  int &slot = found->second[end];
+  if (slot < 0) {
+    slot = static_cast<int>(records_.size());
+    records_.emplace_back();
+    records_.back().key = key;
+    records_.back().kind = kind;
+    records_.back().end = end;
+  }
+  ContactRecord &c = records_[slot];
+  c.point = point.point;
+  c.normal = point.normal;
+  c.overlap = -point.gap;
+  c.normal_force += weight * r.normal_force;
+  c.tangential_force += weight * r.tangential_force;
+  c.sliding = r.slipped;
+}
+
+std::vector<ContactRecord> ContactModel::contact_records() const
+{
+  std::vector<ContactRecord> out = records_;
+  const double per_substep = recorded_substeps_ > 0 ? 1.0 / recorded_substeps_ : 0.0;
+  for (ContactRecord &c : out) {
+    c.normal_force *= per_substep;
+    c.tangential_force *= per_substep;
+  }
+  std::sort(out.begin(), out.end(), [](const ContactRecord &a, const ContactRecord &b) {
+    return a.key != b.key ? a.key < b.key : a.end < b.end;
+  });
+  return out;
 }
 
 std::vector<StoredContact> ContactModel::memories() const

@@ -127,6 +127,21 @@ struct ContactScene {
   std::vector<BoundaryLink> boundaries;
 };
 
+// One contact point of the last grain step, for output (compute wire/contacts): the
+// contact's key, the end of its stretch (0, or 1 for the second end), where and along
+// which normal (from the other body to the wire) it touched at its last evaluation, and
+// its forces on the wire averaged over the step's substeps (weighted as applied).
+struct ContactRecord {
+  enum Kind { wire_grain = 1, wire_wire = 2, wire_boundary = 3 };
+  ContactKey key{};
+  int kind = wire_grain;
+  int end = 0;
+  Vec3 point = Vec3::Zero(), normal = Vec3::Zero();
+  double normal_force = 0.0, overlap = 0.0;
+  Vec3 tangential_force = Vec3::Zero();
+  bool sliding = false;
+};
+
 struct ContactTotals {
   double energy = 0.0;          // elastic energy stored in the contacts
   double normal_force = 0.0;    // sum of the (weighted) normal forces
@@ -137,6 +152,10 @@ class ContactModel {
  public:
   // law: the wire's soft contact law (validated); skin > 0: margin of the candidate lists.
   ContactModel(const SoftContactLaw &law, double wire_radius, double skin);
+  // Friction between elements (static, dynamic), separate from that with the grains (by
+  // default the same); throws std::invalid_argument naming a bad value.
+  void set_wire_wire_friction(double mu_s, double mu_d);
+  const SoftContactLaw &wire_wire_law() const { return wire_wire_law_; }
 
   // Every element of the wire as (lower id, higher id), for the rule that elements joined
   // by a node or by one element do not touch.
@@ -165,6 +184,13 @@ class ContactModel {
   void add_memories(const std::vector<StoredContact> &stored);
   // Forgets the shapes' feature tables (shapes may have moved in memory between runs).
   void forget_shapes() { features_.clear(); }
+
+  // Recording of contact points for output, from the next grain step on (costs a lookup
+  // per closed contact and substep while on).
+  void record_contacts(bool on) { recording_ = on; }
+  // The contact points closed in any substep of the last grain step, forces averaged over
+  // its substeps, in the order of their keys.
+  std::vector<ContactRecord> contact_records() const;
 
   int rebuilds() const { return rebuilds_; }
   // Element-grain evaluations so far, and how many of them were answered from the tracked
@@ -205,6 +231,13 @@ class ContactModel {
   };
 
   SoftContactLaw law_;
+  SoftContactLaw wire_wire_law_;    // law_ with the wire-wire friction
+  bool recording_ = false;
+  int recorded_substeps_ = 0;
+  std::vector<ContactRecord> records_;
+  std::unordered_map<ContactKey, std::array<int, 2>, ContactKeyHash> record_of_;    // by end
+  void record(const ContactKey &key, int kind, int end, const SegmentContact &point, double weight,
+              const SoftContactForce &r);
   double radius_, skin_;
   std::vector<std::array<std::int64_t, 2>> all_elements_;
   ContactScene scene_;

@@ -12,6 +12,7 @@
 #include "fix.h"
 #include "force.h"
 #include "modify.h"
+#include "update.h"
 
 #include <algorithm>
 #include <array>
@@ -484,12 +485,38 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   run("group wire id 1:3");
   EXPECT_NE(error_of("fix w wire wire k_n -1").find("k_n"), std::string::npos);
   EXPECT_NE(error_of("fix w wire wire k_n 1 mu_s 0.2 mu_d 0.5").find("mu"), std::string::npos);
-  EXPECT_NE(error_of("fix w wire wire bogus 1").find("unknown keyword"), std::string::npos);
+  const std::string bogus = error_of("fix w wire wire radius 0.02 bogus 1");
+  EXPECT_NE(bogus.find("unknown keyword 'bogus'"), std::string::npos) << bogus;
+  EXPECT_NE(bogus.find("k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius"), std::string::npos) << bogus;
+  // a keyword where a value belongs names both and the list
+  const std::string early = error_of("fix w wire wire radius k_n 100");
+  EXPECT_NE(early.find("keyword 'radius' needs a value"), std::string::npos) << early;
+  EXPECT_NE(early.find("'k_n'"), std::string::npos) << early;
+  EXPECT_NE(early.find("valid keywords: k_n"), std::string::npos) << early;
+  const std::string last = error_of("fix w wire wire radius 0.02 k_n");
+  EXPECT_NE(last.find("keyword 'k_n' needs a value"), std::string::npos) << last;
   EXPECT_NE(error_of("fix w wire wire k_n 100").find("need a wire radius > 0"), std::string::npos);
   run("bond_style harmonic");
   run("bond_coeff 1 1 0.1");
   run("fix w wire wire");
   EXPECT_NE(error_of("run 1").find("bond_style wire"), std::string::npos);
+}
+
+// fix wire integrates the nodes on its own subcycle in post_force: under respa it would be
+// skipped and under minimize the nodes would not move; both are refused by name.
+TEST_F(WireTest, RespaAndMinimizeAreRefusedByName)
+{
+  scene(straight_chain(3, 0.1, 0.01), 3, true, 1e2, 0.1, 1.0);
+  commands({"group wire id 1:3", "fix w wire wire radius 0.02"});
+  const std::string minimize = error_of("minimize 0 0 10 10");
+  EXPECT_NE(minimize.find("fix wire cannot take part in 'minimize'"), std::string::npos) << minimize;
+  run("run_style respa 2 2");
+  const std::string respa = error_of("run 1");
+  EXPECT_NE(respa.find("fix wire does not work with 'run_style respa'"), std::string::npos) << respa;
+  EXPECT_NE(respa.find("run_style verlet"), std::string::npos) << respa;
+  run("run_style verlet");
+  run("run 1");    // and the ordinary integrator still runs
+  EXPECT_EQ(lmp->update->ntimestep, 1);
 }
 
 // ---------------------------------------------------------------- capstan
@@ -643,6 +670,56 @@ TEST_F(CrossingWiresTest, PressedWireStaysAtTheSpringOverlapSticksUntilMuSAndSli
   EXPECT_GT(x[2] - x[1], x[1] - x[0]);    // still sliding, faster and faster
   EXPECT_NEAR(friction / (kMuD * kNormal), 1.0, 1e-3);
   EXPECT_LT(deepest, 1.001 * kNormal / kN);    // no interpenetration beyond the spring's
+}
+
+// Wire-wire friction of its own (mu_ww_s 0.2, mu_ww_d 0.1) below the wire-grain one (0.5,
+// 0.3): B holds under 0.15 f_n, and under 0.25 f_n (which the wire-grain friction would
+// hold) it slides with the friction force mu_ww_d f_n.
+TEST_F(CrossingWiresTest, WireWireFrictionIsItsOwnAndSetsTheSlidingThreshold)
+{
+  crossing("mu_s 0.5 mu_d 0.3 mu_ww_s 0.2 mu_ww_d 0.1");
+  run("run 300");
+  run("variable fx equal ramp(0," + num(0.075 * kNormal) + ")");    // to 0.15 f_n, slowly
+  run("run 300");
+  const double held = b_position(0);
+  run("run 200");
+  EXPECT_LT(std::abs(held), 0.15 * kNormal / 1e4 * 1.01);    // the tangential spring's stretch only
+  EXPECT_NEAR(b_position(0), held, 1e-6);    // (free, it would move by F t^2 / 2m = 0.15)
+  const double F = 0.25 * kNormal, T = 0.05, m = 2 * kMass;
+  pull(F);
+  run("run 20");
+  double x[3];
+  for (double &xi : x) {
+    xi = b_position(0);
+    run("run 50");
+  }
+  const double a = (x[2] - 2 * x[1] + x[0]) / (T * T), friction = F - m * a;
+  std::printf("[ crossing, mu_ww ] held at %.3g under 0.15 f_n; sliding under 0.25 f_n: friction / f_n = %.6f "
+              "(mu_ww_d 0.1)\n", held, friction / kNormal);
+  EXPECT_GT(x[2] - x[1], x[1] - x[0]);    // sliding, faster and faster
+  EXPECT_NEAR(friction / (0.1 * kNormal), 1.0, 1e-3);
+  EXPECT_NE(error_of("fix w wire wire radius 0.05 k_n 1e4 mu_ww_s 0.1 mu_ww_d 0.2").find("mu_ww_d = 0.2 exceeds"),
+            std::string::npos);
+}
+
+// compute wire/contacts on a wire-wire contact: one row, element 1-2 against the element
+// whose first node is 3, the normal from B down to A, fn = the press, and fix wire's count.
+TEST_F(CrossingWiresTest, WireContactsComputeReportsTheCrossingOnce)
+{
+  crossing();
+  run("compute wc all wire/contacts");
+  run("run 300");
+  const std::vector<std::vector<double>> rows = local_rows("wc");
+  ASSERT_EQ(rows.size(), 1u);
+  const std::vector<double> &r = rows[0];
+  EXPECT_EQ(fix_value("w", 3), 1.0);
+  EXPECT_EQ(r[0], 1.0);
+  EXPECT_EQ(r[1], 2.0);
+  EXPECT_EQ(r[2], 3.0);
+  EXPECT_EQ(r[3], 2.0);    // wire-wire
+  EXPECT_NEAR(r[9], -1.0, 1e-9);
+  EXPECT_NEAR(r[10], kNormal, 1e-3 * kNormal);    // (still settling: 2e-4 after 300 steps)
+  EXPECT_NEAR(r[14], kNormal / kN, 1e-3 * kNormal / kN);
 }
 
 // mu_s alone means mu_d = mu_s: after a slip, a pull below mu_s f_n lets the wire stick
@@ -1060,6 +1137,105 @@ TEST_F(WireOnBoundaryTest, WireRestsOnTheFloorAtTheSpringOverlapAndTheFloorCarri
   EXPECT_EQ(fix_value("w", 11), kNodes);    // wire-boundary contacts
   EXPECT_EQ(fix_value("w", 4), 0.0);        // no wire-grain contact: the ball is far away
   EXPECT_LT(kinetic_energy(1, kNodes), 1e-14);
+}
+
+// A ghost cutoff above a quarter of a periodic box puts two images of one node on a rank
+// (on 4 ranks, 2 x 2: the ranks beside the wire see it across both their y faces, those
+// along it across both x faces). Near the edge of the ghost region an element's other node
+// may be there only in the image a box length away; an element to that image lay along the
+// wire and pushed it up (nodes settled 0.04-0.06 above a floor for r_w = 0.02). The wire
+// must rest as on one rank: each node at r_w - m g / k_n, the floor carrying the weight, no
+// sideways drift.
+TEST_F(WireOnBoundaryTest, WireRestsOnTheFloorWhenARankHoldsTwoImagesOfItsNodes)
+{
+  boundary = "p p f";
+  const int n = 33;    // x from -4 to 4 in a box of +-5, ghost cutoff 3 > 10 / 4
+  std::vector<Point> atoms = straight_chain(n, 0.25, kMass, -4.0, kRadius);
+  for (Point &p : atoms) p.y = -2.5;
+  scene(atoms, n, true, 100.0, 0.25, 0.01);
+  commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0", "group wire id 1:" + std::to_string(n),
+            "group balls empty", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction " + num(kMu)});
+  wire_and_solver();
+  run("run 200");    // (the faulty element copies had thrown nodes off the floor by then)
+  for (int k = 1; k <= n; k++) ASSERT_LT(position(k)[2], 1.01 * kRadius) << "node " << k << " after 200 steps";
+  run("run 2800");
+  const double rest = kRadius - kMass / kN;
+  double lowest = INFINITY, highest = -INFINITY, mean_x = 0.0, mean_y = 0.0;
+  for (int k = 1; k <= n; k++) {
+    const std::vector<double> x = position(k);
+    lowest = std::min(lowest, x[2]), highest = std::max(highest, x[2]);
+    mean_x += x[0] / n, mean_y += x[1] / n;
+  }
+  std::printf("[ wire on floor, two images ] %d ranks: node z %.10g .. %.10g (closed form %.10g), floor %.10g "
+              "(weight %.10g), mean x %.3g y %.6g\n", ranks(), lowest, highest, rest, -fix_value("floor", 2),
+              n * kMass, mean_x, mean_y);
+  EXPECT_NEAR(lowest, rest, 1e-2 * kMass / kN);
+  EXPECT_NEAR(highest, rest, 1e-2 * kMass / kN);
+  EXPECT_NEAR(fix_value("floor", 2) / -(n * kMass), 1.0, 1e-6);
+  EXPECT_NEAR(mean_x, 0.0, 1e-9);    // no net sideways force: the start is symmetric about x = 0
+  EXPECT_NEAR(mean_y, -2.5, 1e-9);
+  EXPECT_EQ(fix_value("w", 11), n);    // wire-boundary contacts
+  EXPECT_EQ(fix_value("w", 3), 0.0);   // wire-wire: none along a straight wire
+  EXPECT_LT(kinetic_energy(1, n), 1e-14);
+}
+
+// compute wire/contacts: at rest on the floor each node is one row (kind 3, the floor as
+// -1), carrying its weight along the floor's normal, at the overlap m g / k_n, sticking;
+// as many rows as fix wire counts contacts, each once over the ranks.
+TEST_F(WireOnBoundaryTest, WireContactsComputeGivesEachNodeOnTheFloorItsWeight)
+{
+  wire_on_floor();
+  wire_and_solver();
+  run("compute wc all wire/contacts");
+  EXPECT_TRUE(local_rows("wc").empty());    // before any step
+  run("run 3000");
+  const std::vector<std::vector<double>> rows = local_rows("wc");
+  ASSERT_EQ((int) rows.size(), kNodes);
+  EXPECT_EQ(fix_value("w", 11), (double) rows.size());
+  double total = 0.0;
+  for (int k = 0; k < kNodes; k++) {
+    const std::vector<double> &r = rows[k];
+    EXPECT_EQ(r[0], k + 1.0);    // the node (rows sorted)
+    EXPECT_EQ(r[1], 0.0);
+    EXPECT_EQ(r[2], -1.0);       // the first boundary fix
+    EXPECT_EQ(r[3], 3.0);        // wire-boundary
+    EXPECT_NEAR(r[4], position(k + 1)[0], 1e-12);
+    EXPECT_NEAR(r[6], -0.5 * kMass / kN, 1e-9);    // midway between node sphere and floor
+    EXPECT_NEAR(r[9], 1.0, 1e-12);                 // normal from the floor to the wire
+    EXPECT_NEAR(r[10], kMass, 1e-6 * kMass) << "node " << k + 1;
+    EXPECT_NEAR(std::hypot(r[11], r[12], r[13]), 0.0, 1e-9 * kMass);
+    EXPECT_NEAR(r[14], kMass / kN, 1e-3 * kMass / kN);
+    EXPECT_EQ(r[15], 0.0);    // sticking
+    total += r[10];
+  }
+  EXPECT_NEAR(total, -fix_value("floor", 2), 1e-9 * total);    // as the floor reports it
+}
+
+// Elements lying on a grain's face: every row is a wire-grain contact with that grain, two
+// ends per element, and the rows' forces on the wire, fn n + f_t, sum to minus the force
+// fix wire hands to the grains (both averaged over the substeps), which is the wire's weight.
+TEST_F(WireOnBoundaryTest, WireContactsComputeSumsToTheForceOnTheGrain)
+{
+  wire_on_floor(false, 0.0, kRadius, true);    // on the top face of a fixed slab, atom kNodes + 2
+  wire_and_solver();
+  run("compute wc all wire/contacts");
+  run("run 3000");
+  const std::vector<std::vector<double>> rows = local_rows("wc");
+  ASSERT_FALSE(rows.empty());
+  double sum[3] = {0.0, 0.0, 0.0};
+  for (const std::vector<double> &r : rows) {
+    EXPECT_EQ(r[2], kNodes + 2.0);    // the slab
+    EXPECT_EQ(r[3], 1.0);             // wire-grain
+    EXPECT_EQ(r[1], r[0] + 1.0);      // an element's two nodes
+    EXPECT_NEAR(r[9], 1.0, 1e-9);     // normal up, out of the face
+    for (int d = 0; d < 3; d++) sum[d] += r[10] * r[7 + d] + r[11 + d];
+  }
+  std::printf("[ wire contacts on a face ] %zu rows, sum of forces on the wire %.12g %.12g %.12g, fix wire on "
+              "grains %.12g, weight %.12g\n", rows.size(), sum[0], sum[1], sum[2], fix_value("w", 9), kNodes * kMass);
+  EXPECT_EQ(rows.size() % 2, 0u);    // two stretch ends per element on the face
+  EXPECT_GE(fix_value("w", 4) * 2, (double) rows.size());    // fix wire counts elements
+  for (int d = 0; d < 3; d++) EXPECT_NEAR(sum[d], -fix_value("w", 7 + d), 1e-12) << "axis " << d;
+  EXPECT_NEAR(sum[2], kNodes * kMass, 1e-6 * kNodes * kMass);
 }
 
 // The floor's friction (mu of fix nscd/wall, static = dynamic for the wire) holds the wire

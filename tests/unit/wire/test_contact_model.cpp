@@ -133,6 +133,86 @@ TEST(WireWireContact, CrossingElementsPushApartByTheOverlapSplitByTheLeverRule)
   EXPECT_NEAR(t.energy, 0.5 * k_n * overlap * overlap, 1e-15);
 }
 
+// Two crossing elements pressed together (f_n = k_n overlap) and the upper one dragged
+// along the lower: the friction force is k_t times the drag while below mu_s f_n, drops to
+// mu_d f_n once it slips, with the wire-wire coefficients (set apart from the wire-grain
+// ones, which would hold up to 0.5 f_n); a model left at its defaults uses the wire-grain
+// coefficients for both.
+TEST(WireWireContact, SlidingThresholdFollowsTheWireWireFriction)
+{
+  const double r_w = 0.05, overlap = 2e-3, dt = 1e-5;
+  SoftContactLaw law = sticky_law();    // wire-grain mu_s = mu_d = 0.5
+  const double fn = law.k_n * overlap;
+  // The x force on the lower element after dragging the upper one by `drag` along x, with
+  // the wire-wire friction (mu_s, mu_d) if `separate`, else left at its default.
+  auto friction_after = [&](bool separate, double drag) {
+    ContactModel model(law, r_w, 0.1);
+    if (separate) model.set_wire_wire_friction(0.2, 0.1);
+    std::vector<Vec3> x = {Vec3(-0.5, 0, 0), Vec3(0.5, 0, 0), Vec3(0, -0.5, 2 * r_w - overlap),
+                           Vec3(0, 0.5, 2 * r_w - overlap)};
+    ContactScene scene = test::chain_scene(x, {});
+    scene.elements = {{0, 1, 1, 2, true}, {2, 3, 3, 4, true}};
+    model.set_elements({{1, 2}, {3, 4}});
+    model.begin_step(scene, 1e-3, false);
+    const int steps = 200;
+    const Vec3 u(drag / (steps * dt), 0, 0);
+    std::vector<Vec3> v = {Vec3::Zero(), Vec3::Zero(), u, u}, f;
+    GrainForceAccumulator none;
+    none.reset(0);
+    for (int k = 0; k < steps; ++k) {
+      x[2] += u * dt, x[3] += u * dt;
+      f.assign(4, Vec3::Zero());
+      model.add_forces(x, v, k * dt, dt, f, none);
+    }
+    return (f[0] + f[1]).x();
+  };
+  const bool separate = true, same = false;
+  const double slip = 0.2 * fn / law.k_t;    // drag at which the wire-wire contact slips
+  EXPECT_NEAR(friction_after(separate, 0.9 * slip) / fn, 0.18, 1e-9);    // sticking: k_t drag
+  EXPECT_NEAR(friction_after(separate, 1.1 * slip) / fn, 0.1, 1e-9);     // slipped: mu_d f_n
+  EXPECT_NEAR(friction_after(separate, 20.0 * slip) / fn, 0.1, 1e-9);
+  EXPECT_NEAR(friction_after(same, 1.1 * slip) / fn, 0.22, 1e-9);        // mu_s 0.5: still sticking
+  EXPECT_NEAR(friction_after(same, 20.0 * slip) / fn, 0.5, 1e-9);
+  ContactModel model(law, r_w, 0.1);
+  EXPECT_THROW(model.set_wire_wire_friction(0.1, 0.2), std::invalid_argument);    // mu_d > mu_s
+  EXPECT_THROW(model.set_wire_wire_friction(-0.1, 0.0), std::invalid_argument);
+}
+
+// Recorded contact points (for compute wire/contacts): the crossing of two elements is one
+// point, at the crossing, normal from the upper element to the lower one (the computing
+// one), its normal force averaged over the step's substeps: closed in the first of two
+// substeps only, it shows half of k_n overlap.
+TEST(WireWireContact, RecordedPointCarriesTheForceAveragedOverTheSubsteps)
+{
+  const double r_w = 0.05, overlap = 2e-3, k_n = 1e3;
+  ContactModel model(test::frictionless(k_n), r_w, 0.1);
+  std::vector<Vec3> x = {Vec3(-0.25, 0, 0), Vec3(0.75, 0, 0), Vec3(0, -0.6, 2 * r_w - overlap),
+                         Vec3(0, 0.4, 2 * r_w - overlap)};
+  ContactScene scene = test::chain_scene(x, {});
+  scene.elements = {{0, 1, 1, 2, true}, {2, 3, 3, 4, true}};
+  model.set_elements({{1, 2}, {3, 4}});
+  model.record_contacts(true);
+  model.begin_step(scene, 1e-3, false);
+  std::vector<Vec3> f(4, Vec3::Zero()), v(4, Vec3::Zero());
+  GrainForceAccumulator none;
+  none.reset(0);
+  model.add_forces(x, v, 0.0, 1e-5, f, none);
+  x[2].z() += 2 * overlap, x[3].z() += 2 * overlap;    // lifted off
+  model.add_forces(x, v, 1e-5, 1e-5, f, none);
+  const std::vector<ContactRecord> records = model.contact_records();
+  ASSERT_EQ(records.size(), 1u);
+  const ContactRecord &c = records[0];
+  EXPECT_EQ(c.kind, ContactRecord::wire_wire);
+  EXPECT_EQ(c.key, (ContactKey{1, 2, 3, 4}));
+  EXPECT_NEAR(c.normal_force, 0.5 * k_n * overlap, 1e-12);
+  EXPECT_NEAR(c.overlap, overlap, 1e-12);    // at its last evaluation while closed
+  EXPECT_NEAR((c.point - Vec3(0, 0, r_w - overlap / 2)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((c.normal - Vec3(0, 0, -1)).norm(), 0.0, 1e-12);
+  EXPECT_FALSE(c.sliding);
+  model.begin_step(scene, 1e-3, false);    // a new step starts empty
+  EXPECT_TRUE(model.contact_records().empty());
+}
+
 // Elements sharing a node or joined by one element never touch (the wire's own bending),
 // however close: a hairpin of four elements folded flat.
 TEST(WireWireContact, ElementsJoinedByANodeOrAnElementDoNotTouch)
