@@ -444,17 +444,26 @@ SolveControl::Step SolveControl::at_check(double residual, int sweeps)
   Step step;
   const bool coarse = options_.coarse_cell > 0.0 && !coarse_dropped_;
   if (coarse) {
-    if (best_ < 0.0 || residual < best_) {
-      best_ = residual;
-      best_sweeps_ = sweeps;
-      step.remember = true;
-    } else if (sweeps - best_sweeps_ >= options_.coarse_patience) {
-      // The coarse correction keeps the residual from falling: back to the best impulses,
-      // on without it.
+    // The residual a window ago (the last check at or before); the window spans at least
+    // two coarse corrections.
+    const int window = std::max(options_.coarse_patience, 2 * options_.coarse_every);
+    double before = -1.0;
+    for (const auto &check : checks_)
+      if (check.first <= sweeps - window) before = check.second;
+    checks_.emplace_back(sweeps, residual);
+    const bool new_best = best_ < 0.0 || residual < best_;
+    if (before >= 0.0 && !(residual <= 0.5 * before) && residual > options_.tolerance) {
+      // Too slow with the coarse correction (stalling, or fighting the sweeps): on without
+      // it, from the best impulses if these are worse.
       coarse_dropped_ = true;
-      step.restore = true;
-      previous_ = -1.0;
-      return step;
+      if (!new_best) {
+        step.restore = true;
+        previous_ = -1.0;
+        return step;
+      }
+    } else if (new_best) {
+      best_ = residual;
+      step.remember = true;
     }
   }
   if (residual <= options_.tolerance || sweeps >= options_.max_sweeps) {
@@ -464,7 +473,8 @@ SolveControl::Step SolveControl::at_check(double residual, int sweeps)
   if (options_.acceleration != Acceleration::none && previous_ >= 0.0 && residual > previous_)
     step.restart = true;
   previous_ = residual;
-  if (coarse && (last_coarse_ < 0 || sweeps - last_coarse_ >= options_.coarse_every)) {
+  if (coarse && !coarse_dropped_ &&
+      (last_coarse_ < 0 || sweeps - last_coarse_ >= options_.coarse_every)) {
     step.coarse = true;
     last_coarse_ = sweeps;
     ++coarse_corrections_;

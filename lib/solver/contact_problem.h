@@ -136,9 +136,9 @@ struct SolverOptions {
   // are grouped into cubic cells of coarse_cell grain sizes (a grain size = twice the mean
   // lever arm of the contacts); each group's normal impulses are scaled and shifted by
   // common amounts solved from a small linear system. 0 = off. Applied at a residual
-  // check at most every coarse_every sweeps; when the residual has not reached a new
-  // minimum for coarse_patience sweeps, the impulses go back to those of the best residual
-  // and the solve goes on without it.
+  // check at most every coarse_every sweeps. It must keep paying: when the residual has
+  // not halved over the last max(coarse_patience, 2 coarse_every) sweeps, the solve goes on
+  // without it, from the impulses of the best residual so far.
   double coarse_cell = 0.0;
   int coarse_every = 1;
   int coarse_patience = 10;
@@ -172,7 +172,7 @@ struct SolveReport {
   bool converged = false;
   ResidualTerms terms;
   int coarse_corrections = 0;    // applied
-  bool coarse_dropped = false;   // coarse_patience ran out: back to the best impulses
+  bool coarse_dropped = false;   // it stopped paying (SolverOptions::coarse_patience)
 };
 
 namespace detail {
@@ -294,6 +294,7 @@ class SolveControl {
     bool stop = false;              // converged, or max_sweeps reached
     bool remember = false;          // new best residual: remember_impulses()
     bool restore = false;           // restore_remembered_impulses(), exchange, check again
+                                    // (the coarse correction stopped paying, best earlier)
     bool coarse = false;            // coarse_correction() before the next sweep
     bool restart = false;           // restart_acceleration()
   };
@@ -308,7 +309,7 @@ class SolveControl {
   SolverOptions options_;
   double previous_ = -1.0;          // residual of the last check (< 0: none yet)
   double best_ = -1.0;
-  int best_sweeps_ = 0;
+  std::vector<std::pair<int, double>> checks_;    // (sweeps, residual) while coarse is on
   int last_coarse_ = -1;
   int coarse_corrections_ = 0;
   bool coarse_dropped_ = false;
