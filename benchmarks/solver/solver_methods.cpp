@@ -58,6 +58,17 @@ std::vector<Method> all_methods()
       {"gs+coarse1", with(Acceleration::none, 1.0)},
       {"nesterov+coarse", with(Acceleration::nesterov, 2.0)},
       {"nesterov+coarse/4", with(Acceleration::nesterov, 2.0, 4)},
+      // as fix nscd checks by default: the residual every 4 sweeps
+      {"gs/check4", [](SolverOptions &o) { o.check_every = 4; }},
+      {"nesterov/check4", [](SolverOptions &o) {
+         o.acceleration = Acceleration::nesterov;
+         o.check_every = 4;
+       }},
+      {"nesterov+coarse/check4", [](SolverOptions &o) {
+         o.acceleration = Acceleration::nesterov;
+         o.coarse_cell = 2.0;
+         o.check_every = 4;
+       }},
       // sweep orders and relaxation, plain and with momentum
       {"gs-up", with(Acceleration::none, 0.0), 1},
       {"gs-down", with(Acceleration::none, 0.0), -1},
