@@ -6,13 +6,16 @@
 
 set(LAMMPS_SOURCE_DIR "" CACHE PATH
     "LAMMPS source tree (the directory holding cmake/ and src/); empty = fetch Debian's")
+set(NSCD_LAMMPS_RELEASE "4Feb2025" CACHE STRING
+    "LAMMPS release tools/fetch_lammps.sh fetches when LAMMPS_SOURCE_DIR is empty (4Feb2025, 4Jul2026)")
 set(NSCD_CACHE_DIR "$ENV{HOME}/.cache/nscd-lammps" CACHE PATH
     "Where tools/fetch_lammps.sh keeps the fetched LAMMPS source")
 
 if(NOT LAMMPS_SOURCE_DIR)
-  message(STATUS "No LAMMPS_SOURCE_DIR given: fetching Debian's lammps source into ${NSCD_CACHE_DIR}")
+  message(STATUS "No LAMMPS_SOURCE_DIR given: fetching LAMMPS ${NSCD_LAMMPS_RELEASE} (Debian's "
+                 "source package) into ${NSCD_CACHE_DIR}")
   execute_process(
-    COMMAND bash ${PROJECT_SOURCE_DIR}/tools/fetch_lammps.sh ${NSCD_CACHE_DIR}
+    COMMAND bash ${PROJECT_SOURCE_DIR}/tools/fetch_lammps.sh ${NSCD_CACHE_DIR} ${NSCD_LAMMPS_RELEASE}
     OUTPUT_VARIABLE _fetched OUTPUT_STRIP_TRAILING_WHITESPACE
     RESULT_VARIABLE _fetch_rc)
   if(NOT _fetch_rc EQUAL 0 OR NOT EXISTS "${_fetched}/cmake/CMakeLists.txt")
@@ -29,17 +32,27 @@ if(NOT EXISTS "${LAMMPS_SOURCE_DIR}/cmake/CMakeLists.txt")
                       "point it at the top of a LAMMPS source tree")
 endif()
 set(NSCD_LAMMPS_TREE "${LAMMPS_SOURCE_DIR}")
-message(STATUS "LAMMPS source tree: ${NSCD_LAMMPS_TREE}")
+include(${CMAKE_CURRENT_LIST_DIR}/LammpsVersion.cmake)
+nscd_check_lammps_version("${NSCD_LAMMPS_TREE}")
+message(STATUS "LAMMPS source tree: ${NSCD_LAMMPS_TREE} (LAMMPS ${NSCD_LAMMPS_VERSION})")
 
 # LAMMPS settings this package relies on (users may still add more packages with -DPKG_...)
 set(BUILD_MPI ON CACHE BOOL "Build LAMMPS with MPI")
 set(PKG_MOLECULE ON CACHE BOOL "Bonds and angles (wire)")
 set(PKG_BODY ON CACHE BOOL "Soft-contact spheropolyhedra, for comparison")
-set(LAMMPS_EXCEPTIONS ON CACHE BOOL "error->all throws; tests check messages")
+set(LAMMPS_EXCEPTIONS ON CACHE BOOL "error->all throws; tests check messages (always on from LAMMPS 2024)")
 set(ENABLE_TESTING OFF CACHE BOOL "LAMMPS' own tests download googletest: keep off")
 set(WITH_JPEG OFF CACHE BOOL "")
 set(WITH_PNG OFF CACHE BOOL "")
 set(WITH_FFMPEG OFF CACHE BOOL "")
+# No scene of this package needs an FFT; a package that does (KSPACE, ...) gets FFTW3 instead of
+# LAMMPS' fallback KISS FFT.
+if(PKG_KSPACE OR PKG_ELECTRODE OR PKG_AMOEBA OR PKG_SCAFACOS)
+  set(FFT "FFTW3" CACHE STRING "FFT library of LAMMPS (this package: FFTW3)")
+  if(NOT FFT STREQUAL "FFTW3")
+    message(WARNING "FFT=${FFT}: this package's build uses FFTW3 (Debian libfftw3-dev)")
+  endif()
+endif()
 find_package(MPI REQUIRED)
 
 # Register our styles with LAMMPS' style-header generator.

@@ -3,6 +3,8 @@
 #include "angle_wire.h"
 #include "nscd_arrays.h"
 
+#include "wire/elastic_forces.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -32,11 +34,11 @@ void AngleWire::allocate()
   stiffness.assign(n + 1, 0.0);
 }
 
-nscd::wire::BendingForces AngleWire::joint(int type, const nscd::Vec3 &a, const nscd::Vec3 &b,
-                                           const nscd::Vec3 &c) const
+nscd::wire::BendingForces AngleWire::joint(int type, const double *a, const double *b,
+                                           const double *c) const
 {
   try {
-    return nscd::wire::bending_node_forces(stiffness[type], a, b, c);
+    return nscd::wire::bending_node_forces(stiffness[type], vec3(a), vec3(b), vec3(c));
   } catch (std::exception &e) {
     error->one(FLERR, "angle_style wire: angle of type {}: {}; two wire nodes of a joint "
                "coincide (check the initial positions)", type, e.what());
@@ -54,7 +56,7 @@ void AngleWire::compute(int eflag, int vflag)
   for (int n = 0; n < neighbor->nanglelist; n++) {
     const int i1 = anglelist[n][0], i2 = anglelist[n][1], i3 = anglelist[n][2];
     const int type = anglelist[n][3];
-    const nscd::wire::BendingForces e = joint(type, vec3(x[i1]), vec3(x[i2]), vec3(x[i3]));
+    const nscd::wire::BendingForces e = joint(type, x[i1], x[i2], x[i3]);
     const int node[3] = {i1, i2, i3};
     const nscd::Vec3 *force[3] = {&e.on_a, &e.on_b, &e.on_c};
     for (int k = 0; k < 3; k++)
@@ -115,12 +117,10 @@ void AngleWire::write_data(FILE *fp)
 
 double AngleWire::single(int type, int i1, int i2, int i3)
 {
+  // the images of the outer nodes closest to the middle one, as compute angle/local uses
   double **x = atom->x;
-  // closest images, as compute angle/local does for its geometry
-  double d1[3] = {x[i1][0] - x[i2][0], x[i1][1] - x[i2][1], x[i1][2] - x[i2][2]};
-  double d2[3] = {x[i3][0] - x[i2][0], x[i3][1] - x[i2][1], x[i3][2] - x[i2][2]};
-  domain->minimum_image(d1);
-  domain->minimum_image(d2);
-  const nscd::Vec3 b = vec3(x[i2]);
-  return joint(type, b + vec3(d1), b, b + vec3(d2)).energy;
+  double a[3], c[3];
+  domain->closest_image(x[i2], x[i1], a);
+  domain->closest_image(x[i2], x[i3], c);
+  return joint(type, a, x[i2], c).energy;
 }

@@ -14,9 +14,11 @@ AngleStyle(wire,AngleWire);
 
 #include "angle.h"
 
-#include "wire/elastic_forces.h"
-
 #include <vector>
+
+namespace nscd::wire {
+struct BendingForces;
+}    // namespace nscd::wire
 
 namespace LAMMPS_NS {
 
@@ -36,8 +38,7 @@ class AngleWire : public Angle {
 
   // Forces of the joint a-b-c (b = the node carrying the spring) of angle type `type`;
   // a LAMMPS error if an element has zero length.
-  nscd::wire::BendingForces joint(int type, const nscd::Vec3 &a, const nscd::Vec3 &b,
-                                  const nscd::Vec3 &c) const;
+  nscd::wire::BendingForces joint(int type, const double *a, const double *b, const double *c) const;
 
  private:
   std::vector<double> stiffness;    // k_rot per angle type, index 1..nangletypes

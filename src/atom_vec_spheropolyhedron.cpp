@@ -8,6 +8,8 @@
 #include "memory.h"
 #include "nscd_arrays.h"
 
+#include "shape/shape_library.h"
+
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -21,32 +23,35 @@ const char *const kLibraryArg = "library";    // followed by the serialised shap
 }    // namespace
 
 AtomVecSpheropolyhedron::AtomVecSpheropolyhedron(LAMMPS *lmp) :
-    AtomVec(lmp), own(fields_storage()), shape(own.shape), quat(own.quat), inertia(own.inertia),
-    radius(nullptr), rmass(nullptr), omega(nullptr), torque(nullptr)
+    AtomVec(lmp), own(fields_storage()), shape(own.shape), inertia(own.inertia), quat(nullptr),
+    radius(nullptr), rmass(nullptr), omega(nullptr), torque(nullptr),
+    library(std::make_unique<nscd::ShapeLibrary>())
 {
   mass_type = PER_ATOM;
   molecular = Atom::ATOMIC;
   atom->rmass_flag = atom->radius_flag = atom->omega_flag = atom->torque_flag = 1;
+  atom->quat_flag = 1;    // orientation in LAMMPS' own per-atom quat
 
   point_peratom("shape", &shape, Atom::INT, 0);
-  point_peratom("quat", &quat, Atom::DOUBLE, 4);
   point_peratom("inertia", &inertia, Atom::DOUBLE, 3);
 
   // Ghosts need shape and orientation for contact geometry, so quat goes every step;
   // the solver exchanges velocities itself, comm_vel is for `comm_modify vel yes`.
-  fields_grow = (char *) "shape quat inertia radius rmass omega torque";
-  fields_copy = (char *) "shape quat inertia radius rmass omega";
-  fields_comm = (char *) "quat";
-  fields_comm_vel = (char *) "quat omega";
-  fields_reverse = (char *) "torque";
-  fields_border = (char *) "shape quat inertia radius rmass";
-  fields_border_vel = (char *) "shape quat inertia radius rmass omega";
-  fields_exchange = (char *) "shape quat inertia radius rmass omega";
-  fields_restart = (char *) "shape quat inertia radius rmass omega";
-  fields_create = (char *) "shape quat inertia radius rmass omega";
-  fields_data_atom = (char *) "id type shape rmass x quat";
-  fields_data_vel = (char *) "id v omega";
+  fields_grow = {"shape", "quat", "inertia", "radius", "rmass", "omega", "torque"};
+  fields_copy = {"shape", "quat", "inertia", "radius", "rmass", "omega"};
+  fields_comm = {"quat"};
+  fields_comm_vel = {"quat", "omega"};
+  fields_reverse = {"torque"};
+  fields_border = {"shape", "quat", "inertia", "radius", "rmass"};
+  fields_border_vel = {"shape", "quat", "inertia", "radius", "rmass", "omega"};
+  fields_exchange = {"shape", "quat", "inertia", "radius", "rmass", "omega"};
+  fields_restart = {"shape", "quat", "inertia", "radius", "rmass", "omega"};
+  fields_create = {"shape", "quat", "inertia", "radius", "rmass", "omega"};
+  fields_data_atom = {"id", "type", "shape", "rmass", "x", "quat"};
+  fields_data_vel = {"id", "v", "omega"};
 }
+
+AtomVecSpheropolyhedron::~AtomVecSpheropolyhedron() = default;
 
 /* A new block per instance, kept until the program ends (a few bytes per atom_style
    command); ~AtomVec frees the arrays themselves. */
@@ -62,9 +67,9 @@ AtomVecSpheropolyhedron::OwnFields &AtomVecSpheropolyhedron::fields_storage()
 void AtomVecSpheropolyhedron::point_peratom(const char *name, void *address, int datatype,
                                             int cols, int threadflag)
 {
-  for (int i = 0; i < atom->nperatom; i++)
-    if (strcmp(atom->peratom[i].name, name) == 0) {
-      atom->peratom[i].address = address;
+  for (auto &entry : atom->peratom)
+    if (entry.name == name) {
+      entry.address = address;
       return;
     }
   atom->add_peratom(name, address, datatype, cols, threadflag);
@@ -76,7 +81,7 @@ void AtomVecSpheropolyhedron::process_args(int narg, char **arg)
 {
   if (narg == 2 && strcmp(arg[0], kLibraryArg) == 0) {
     try {
-      library = nscd::ShapeLibrary::deserialize(arg[1]);
+      *library = nscd::ShapeLibrary::deserialize(arg[1]);
     } catch (std::exception &e) {
       error->all(FLERR, "atom_style spheropolyhedron: stored shape library is unreadable ({}); "
                  "the restart file is damaged or from another version", e.what());
@@ -90,6 +95,7 @@ void AtomVecSpheropolyhedron::process_args(int narg, char **arg)
 
 void AtomVecSpheropolyhedron::grow_pointers()
 {
+  quat = atom->quat;
   radius = atom->radius;
   rmass = atom->rmass;
   omega = atom->omega;
@@ -123,10 +129,10 @@ void AtomVecSpheropolyhedron::data_atom_post(int i)
 
 void AtomVecSpheropolyhedron::check_shape_id(int i) const
 {
-  if (shape[i] < 0 || shape[i] > library.size())
+  if (shape[i] < 0 || shape[i] > library->size())
     error->one(FLERR, "Atom ID {} has shape id {}, but the shape library holds {} shape(s); "
                "load the shapes ('shapes read FILE') before read_data, or use 0 for a point",
-               atom->tag[i], shape[i], library.size());
+               atom->tag[i], shape[i], library->size());
 }
 
 void AtomVecSpheropolyhedron::set_shape(int i, int shape_id, double mass)
@@ -139,15 +145,24 @@ void AtomVecSpheropolyhedron::set_shape(int i, int shape_id, double mass)
     radius[i] = 0.0;
     return;
   }
-  const nscd::Spheropolyhedron &s = library.shape(shape_id);
-  const double density = mass / s.volume;
-  for (int k = 0; k < 3; k++) inertia[i][k] = density * s.principal_inertia[k];
+  const nscd::Spheropolyhedron &s = library->shape(shape_id);
+  nscd::GrainInertia grain;
+  try {
+    grain = nscd::grain_inertia_from_mass(s, mass);
+  } catch (std::exception &e) {
+    error->one(FLERR, "atom ID {} with shape {}: {}", atom->tag[i], shape_id, e.what());
+  }
+  for (int k = 0; k < 3; k++) inertia[i][k] = grain.inertia[k];
   radius[i] = s.bounding_radius;
 }
 
 void AtomVecSpheropolyhedron::add_shapes(const nscd::ShapeLibrary &more)
 {
-  library.append(more);
+  try {    // every rank holds the same library: all fail alike
+    library->append(more);
+  } catch (std::exception &e) {
+    error->all(FLERR, "{}", e.what());
+  }
   record_library_in_style_args();
 }
 
@@ -156,7 +171,7 @@ void AtomVecSpheropolyhedron::add_shapes(const nscd::ShapeLibrary &more)
    own argument list is the one written, so our slice of it is replaced. */
 void AtomVecSpheropolyhedron::record_library_in_style_args()
 {
-  const std::string text = library.serialize();
+  const std::string text = library->serialize();
   AtomVec *top = atom->avec;
   std::vector<std::string> args;
   if (top == this) {
@@ -195,6 +210,16 @@ AtomVecSpheropolyhedron *AtomVecSpheropolyhedron::find(LAMMPS *lmp, const char *
   return static_cast<AtomVecSpheropolyhedron *>(avec);
 }
 
+const nscd::ShapeLibrary &AtomVecSpheropolyhedron::shapes() const
+{
+  return *library;
+}
+
+const nscd::Spheropolyhedron &AtomVecSpheropolyhedron::shape_of(int i) const
+{
+  return library->shape(shape[i]);
+}
+
 nscd::Pose AtomVecSpheropolyhedron::pose(int i) const
 {
   nscd::Pose p;
@@ -209,10 +234,10 @@ namespace {
 const char *const kProperties[] = {"shape", "qw", "qx", "qy", "qz", "inertia1", "inertia2", "inertia3"};
 }
 
-int AtomVecSpheropolyhedron::property_atom(char *name)
+int AtomVecSpheropolyhedron::property_atom(const std::string &name)
 {
   for (int k = 0; k < 8; k++)
-    if (strcmp(name, kProperties[k]) == 0) return k;
+    if (name == kProperties[k]) return k;
   return -1;
 }
 

@@ -1,11 +1,15 @@
 /* atom_style spheropolyhedron: rigid convex spheropolyhedra (grains) as LAMMPS atoms.
 
    Per atom: shape id into the shape library (0 = a point, e.g. a wire node), orientation
-   quaternion (body -> world, w x y z), angular velocity (world frame), torque, mass,
-   principal moments of inertia (body frame) and the bounding radius used for
-   neighbour lists and ghost cutoffs. The shape library lives in this object; it is
-   stored in restart files as this style's arguments, so a restart is self-contained.
-   See doc/atom_style_spheropolyhedron.md. */
+   quaternion (body -> world, w x y z; LAMMPS' core per-atom `quat`, so `set quat`,
+   `displace_atoms rotate` and `compute property/atom quatw ...` work on grains), angular
+   velocity (world frame), torque, mass, principal moments of inertia (body frame) and the
+   bounding radius used for neighbour lists and ghost cutoffs. The shape library lives in
+   this object; it is stored in restart files as this style's arguments, so a restart is
+   self-contained. See doc/atom_style_spheropolyhedron.md.
+
+   Only LAMMPS headers here: style_atom.h pulls this file into LAMMPS' core, which should
+   not compile Eigen and lib/ (the library sits behind a pointer). */
 
 #ifdef ATOM_CLASS
 // clang-format off
@@ -17,34 +21,41 @@ AtomStyle(spheropolyhedron,AtomVecSpheropolyhedron);
 #define LMP_ATOM_VEC_SPHEROPOLYHEDRON_H
 
 #include "atom_vec.h"
-#include "shape/shape_library.h"
 
+#include <memory>
 #include <string>
+
+namespace nscd {
+class ShapeLibrary;
+struct Spheropolyhedron;
+struct Pose;
+}    // namespace nscd
 
 namespace LAMMPS_NS {
 
 class AtomVecSpheropolyhedron : public AtomVec {
  public:
   AtomVecSpheropolyhedron(class LAMMPS *);
+  ~AtomVecSpheropolyhedron() override;
   void process_args(int, char **) override;
 
   void grow_pointers() override;
   void create_atom_post(int) override;
   void data_atom_post(int) override;
-  int property_atom(char *) override;
+  int property_atom(const std::string &) override;
   void pack_property_atom(int, double *, int, int) override;
 
   // The atom style instance of this run (also inside atom_style hybrid), or an error
   // naming the missing `atom_style spheropolyhedron` when there is none.
   static AtomVecSpheropolyhedron *find(class LAMMPS *, const char *caller);
 
-  const nscd::ShapeLibrary &shapes() const { return library; }
+  const nscd::ShapeLibrary &shapes() const;
   // Appends shapes and records the whole library in the atom style's arguments.
   void add_shapes(const nscd::ShapeLibrary &more);
 
   // Where grain i is: position and orientation as the geometry code wants them.
   nscd::Pose pose(int i) const;
-  const nscd::Spheropolyhedron &shape_of(int i) const { return library.shape(shape[i]); }
+  const nscd::Spheropolyhedron &shape_of(int i) const;
 
   // Gives atom i shape `shape_id` (0 = point) with the given mass; sets inertia and radius.
   void set_shape(int i, int shape_id, double mass);
@@ -55,20 +66,19 @@ class AtomVecSpheropolyhedron : public AtomVec {
   // sub-style has been deleted.
   struct OwnFields {
     int *shape = nullptr;
-    double **quat = nullptr;
     double **inertia = nullptr;
   };
   OwnFields &own;
   int *&shape;           // shape id, 1..N; 0 = point mass (no shape)
-  double **&quat;        // orientation, body -> world, (w, x, y, z)
   double **&inertia;     // principal moments of inertia, body frame
+  double **quat;         // orientation, body -> world, (w, x, y, z): atom->quat
   double *radius;       // bounding radius (centre of mass to farthest surface point)
   double *rmass;
   double **omega;       // angular velocity, world frame
   double **torque;
 
  private:
-  nscd::ShapeLibrary library;
+  std::unique_ptr<nscd::ShapeLibrary> library;
 
   static OwnFields &fields_storage();
   void point_peratom(const char *name, void *address, int datatype, int cols, int threadflag = 0);

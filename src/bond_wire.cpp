@@ -3,6 +3,8 @@
 #include "bond_wire.h"
 #include "nscd_arrays.h"
 
+#include "wire/elastic_forces.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -29,14 +31,23 @@ void BondWire::allocate()
   const int n = atom->nbondtypes;
   memory->create(setflag, n + 1, "bond:setflag");
   for (int i = 1; i <= n; i++) setflag[i] = 0;
-  laws.assign(n + 1, nscd::wire::AxialLaw{});
+  k_elo.assign(n + 1, 0.0);
   r0.assign(n + 1, 0.0);
+  is_string.assign(n + 1, 0);
 }
 
-nscd::wire::AxialForces BondWire::element(int type, const nscd::Vec3 &a, const nscd::Vec3 &b) const
+nscd::wire::AxialLaw BondWire::law(int type) const
+{
+  nscd::wire::AxialLaw law;
+  law.k_elo = k_elo[type];
+  law.resists_compression = !is_string[type];
+  return law;
+}
+
+nscd::wire::AxialForces BondWire::element(int type, const double *a, const double *b) const
 {
   try {
-    return nscd::wire::axial_element_forces(laws[type], r0[type], a, b);
+    return nscd::wire::axial_element_forces(law(type), r0[type], vec3(a), vec3(b));
   } catch (std::exception &e) {
     error->one(FLERR, "bond_style wire: bond of type {}: {}; two bonded wire nodes coincide "
                "(check the initial positions)", type, e.what());
@@ -53,7 +64,7 @@ void BondWire::compute(int eflag, int vflag)
 
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i1 = bondlist[n][0], i2 = bondlist[n][1], type = bondlist[n][2];
-    const nscd::wire::AxialForces e = element(type, vec3(x[i1]), vec3(x[i2]));
+    const nscd::wire::AxialForces e = element(type, x[i1], x[i2]);
     if (newton_bond || i1 < nlocal)
       for (int d = 0; d < 3; d++) f[i1][d] += e.on_a[d];
     if (newton_bond || i2 < nlocal)
@@ -76,10 +87,10 @@ void BondWire::coeff(int narg, char **arg)
   if (!allocated) allocate();
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double k_elo = utils::numeric(FLERR, arg[1], false, lmp);
+  const double stiffness = utils::numeric(FLERR, arg[1], false, lmp);
   const double rest = utils::numeric(FLERR, arg[2], false, lmp);
-  if (!(k_elo >= 0.0) || !std::isfinite(k_elo))
-    error->all(FLERR, "bond_coeff wire: k_elo = {} must be a finite force >= 0", k_elo);
+  if (!(stiffness >= 0.0) || !std::isfinite(stiffness))
+    error->all(FLERR, "bond_coeff wire: k_elo = {} must be a finite force >= 0", stiffness);
   if (!(rest > 0.0) || !std::isfinite(rest))
     error->all(FLERR, "bond_coeff wire: rest length r0 = {} must be > 0", rest);
   bool string = false;
@@ -92,8 +103,8 @@ void BondWire::coeff(int narg, char **arg)
     string = value == "yes";
   }
   for (int i = ilo; i <= ihi; i++) {
-    laws[i].k_elo = k_elo;
-    laws[i].resists_compression = !string;
+    k_elo[i] = stiffness;
+    is_string[i] = string;
     r0[i] = rest;
     setflag[i] = 1;
   }
@@ -108,7 +119,7 @@ void BondWire::write_restart(FILE *fp)
 {
   const int n = atom->nbondtypes;
   for (int i = 1; i <= n; i++) {
-    const double row[3] = {laws[i].k_elo, r0[i], laws[i].resists_compression ? 0.0 : 1.0};
+    const double row[3] = {k_elo[i], r0[i], is_string[i] ? 1.0 : 0.0};
     fwrite(row, sizeof(double), 3, fp);
   }
 }
@@ -121,9 +132,9 @@ void BondWire::read_restart(FILE *fp)
   if (comm->me == 0) utils::sfread(FLERR, rows.data(), sizeof(double), 3 * n, fp, nullptr, error);
   MPI_Bcast(rows.data(), 3 * n, MPI_DOUBLE, 0, world);
   for (int i = 1; i <= n; i++) {
-    laws[i].k_elo = rows[3 * (i - 1)];
+    k_elo[i] = rows[3 * (i - 1)];
     r0[i] = rows[3 * (i - 1) + 1];
-    laws[i].resists_compression = rows[3 * (i - 1) + 2] == 0.0;
+    is_string[i] = rows[3 * (i - 1) + 2] != 0.0;
     setflag[i] = 1;
   }
 }
@@ -131,15 +142,15 @@ void BondWire::read_restart(FILE *fp)
 void BondWire::write_data(FILE *fp)
 {
   for (int i = 1; i <= atom->nbondtypes; i++)
-    fprintf(fp, "%d %.17g %.17g string %s\n", i, laws[i].k_elo, r0[i],
-            laws[i].resists_compression ? "no" : "yes");
+    fprintf(fp, "%d %.17g %.17g string %s\n", i, k_elo[i], r0[i], is_string[i] ? "yes" : "no");
 }
 
 /* Energy of a bond of length sqrt(rsq); fforce = force on i over the distance, as in compute(). */
 double BondWire::single(int type, double rsq, int /*i*/, int /*j*/, double &fforce)
 {
   const double r = std::sqrt(rsq);
-  const nscd::wire::AxialForces e = element(type, nscd::Vec3(r, 0.0, 0.0), nscd::Vec3::Zero());
+  const double a[3] = {r, 0.0, 0.0}, b[3] = {0.0, 0.0, 0.0};
+  const nscd::wire::AxialForces e = element(type, a, b);
   fforce = e.on_a.x() / r;
   return e.energy;
 }

@@ -14,9 +14,12 @@ BondStyle(wire,BondWire);
 
 #include "bond.h"
 
-#include "wire/elastic_forces.h"
-
 #include <vector>
+
+namespace nscd::wire {
+struct AxialLaw;
+struct AxialForces;
+}    // namespace nscd::wire
 
 namespace LAMMPS_NS {
 
@@ -33,16 +36,18 @@ class BondWire : public Bond {
   double single(int, double, int, int, double &) override;
 
   // The axial law and rest length of bond type `type` (what fix wire's subcycle uses).
-  const nscd::wire::AxialLaw &law(int type) const { return laws[type]; }
+  nscd::wire::AxialLaw law(int type) const;
   double rest_length(int type) const { return r0[type]; }
 
   // Forces on the two nodes of a bond of type `type` between positions a and b; a LAMMPS
   // error naming the bond if the element has zero length.
-  nscd::wire::AxialForces element(int type, const nscd::Vec3 &a, const nscd::Vec3 &b) const;
+  nscd::wire::AxialForces element(int type, const double *a, const double *b) const;
 
  private:
-  std::vector<nscd::wire::AxialLaw> laws;    // per bond type, index 1..nbondtypes
-  std::vector<double> r0;
+  // per bond type, index 1..nbondtypes (lib/wire's AxialLaw; kept as plain numbers so that
+  // this header, which style_bond.h pulls into LAMMPS' core, needs no lib/ header)
+  std::vector<double> k_elo, r0;
+  std::vector<char> is_string;    // 1: no force in compression
 
   void allocate();
 };

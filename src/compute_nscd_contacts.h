@@ -1,5 +1,6 @@
-/* compute nscd/contacts: one row per contact point of fix nscd's last solve, for
-   `dump local` and analysis (force networks, fabric). See doc/compute_nscd_contacts.md. */
+/* compute nscd/contacts: one row per contact point of fix nscd's last solve, or per
+   contacting pair of bodies (keyword pairs), for `dump local` and analysis (force networks,
+   fabric). See doc/compute_nscd_contacts.md. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off
@@ -12,7 +13,7 @@ ComputeStyle(nscd/contacts,ComputeNSCDContacts);
 
 #include "compute.h"
 
-#include <vector>
+#include <cstdint>
 
 namespace LAMMPS_NS {
 
@@ -28,7 +29,11 @@ class ComputeNSCDContacts : public Compute {
   class FixNSCD *fix = nullptr;
   int nmax = 0;
   bool active_only = false;
+  bool per_pair = false;
   void grow(int n);
+  bool in_group(std::int64_t tag) const;
+  void fill_point_rows();
+  void fill_pair_rows();
 };
 
 }    // namespace LAMMPS_NS

@@ -10,6 +10,8 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "wire/elastic_forces.h"
+
 using namespace LAMMPS_NS;
 
 namespace {
@@ -59,8 +61,7 @@ void ComputeWireLocal::compute_local()
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int *b = neighbor->bondlist[n];
     if (!(atom->mask[b[0]] & groupbit)) continue;
-    const nscd::wire::AxialForces e = bond->element(
-        b[2], nscd::Vec3(x[b[0]][0], x[b[0]][1], x[b[0]][2]), nscd::Vec3(x[b[1]][0], x[b[1]][1], x[b[1]][2]));
+    const nscd::wire::AxialForces e = bond->element(b[2], x[b[0]], x[b[1]]);
     double *out = array_local[row++];
     out[ID1] = atom->tag[b[0]];
     out[ID2] = atom->tag[b[1]];

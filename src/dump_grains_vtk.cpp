@@ -9,7 +9,7 @@
 #include "error.h"
 #include "update.h"
 
-#include "shape/spheropolyhedron.h"
+#include "shape/shape_library.h"
 
 #include <cmath>
 #include <cstring>
@@ -117,7 +117,12 @@ const DumpGrainsVTK::Mesh &DumpGrainsVTK::mesh_of(int shape_id)
     std::vector<nscd::Vec3> points;
     for (const nscd::Vec3 &v : shape.vertices)
       for (const nscd::Vec3 &d : directions) points.push_back(v + shape.radius * d);
-    rounded = nscd::make_spheropolyhedron(points, 0.0);
+    try {
+      rounded = nscd::make_spheropolyhedron(points, 0.0);
+    } catch (std::exception &e) {    // e.g. a needle near the thinnest shape allowed
+      error->warning(FLERR, "dump grains/vtk: shape {} gets no surface mesh ({})", shape_id, e.what());
+      return mesh;
+    }
     for (nscd::Vec3 &v : rounded.vertices) v = rounded.input_rotation * v + rounded.input_centroid;
     surface = &rounded;
   }

@@ -14,16 +14,23 @@
 #include "modify.h"
 #include "nscd_arrays.h"
 #include "nscd_gather.h"
+#include "nscd_restart.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
+#include "nscd_contact.h"
+#include "nscd_boundary_fix.h"
 #include "pair_nscd.h"
 #include "update.h"
 
+#include "solver/contact_problem.h"
 #include "solver/rigid_motion.h"
+#include "solver/warm_start.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -34,13 +41,25 @@ enum Diagnostic {
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
 
-// Restart files hold ImpulseRecords as raw bytes: their layout is the file format.
+// Restart files hold ImpulseRecords as raw bytes: their layout is the file format (version 1:
+// the record count, then the records).
+constexpr int kRestartVersion = 1;
 static_assert(sizeof(nscd::ImpulseRecord) == 48, "restart record layout changed");
 }    // namespace
 
+struct FixNSCD::Solver {
+  nscd::SolverOptions options;
+  nscd::ContactProblem problem;
+  nscd::SolveReport report;    // of the last step
+  nscd::WarmStartCache warm_start;
+  nscd::WarmStartCache handed_over;    // other ranks' unused impulses, after a list rebuild
+  std::vector<nscd::ImpulseRecord> restored_contacts;    // warm start read from a restart file
+};
+
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N] */
-FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
 {
   time_integrate = 1;
   restart_global = 1;
@@ -57,25 +76,25 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
   // Defaults (doc/fix_nscd.md): theta = 1 lets no impact sink into an obstacle (with
   // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
   // is checked every 4 sweeps (it costs about a sweep).
-  options.theta = 1.0;
-  options.check_every = 4;
+  solver->options.theta = 1.0;
+  solver->options.check_every = 4;
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
     const char *value = arg[iarg + 1];
-    if (key == "theta") options.theta = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "tolerance") options.tolerance = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "max_sweeps") options.max_sweeps = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "relaxation") options.relaxation = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "seed") options.seed = (std::uint64_t) utils::bnumeric(FLERR, value, false, lmp);
+    if (key == "theta") solver->options.theta = utils::numeric(FLERR, value, false, lmp);
+    else if (key == "tolerance") solver->options.tolerance = utils::numeric(FLERR, value, false, lmp);
+    else if (key == "max_sweeps") solver->options.max_sweeps = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "relaxation") solver->options.relaxation = utils::numeric(FLERR, value, false, lmp);
+    else if (key == "seed") solver->options.seed = (std::uint64_t) utils::bnumeric(FLERR, value, false, lmp);
     else if (key == "exchange") exchange_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "check") options.check_every = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "check") solver->options.check_every = utils::inumeric(FLERR, value, false, lmp);
     else if (key == "warn") warn_every = utils::inumeric(FLERR, value, false, lmp);
     else if (key == "order") {
       const std::string order = value;
-      if (order == "as_given") options.order = nscd::SweepOrder::as_given;
-      else if (order == "shuffled") options.order = nscd::SweepOrder::shuffled;
-      else if (order == "forward_backward") options.order = nscd::SweepOrder::forward_backward;
+      if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
+      else if (order == "shuffled") solver->options.order = nscd::SweepOrder::shuffled;
+      else if (order == "forward_backward") solver->options.order = nscd::SweepOrder::forward_backward;
       else
         error->all(FLERR, "fix nscd: unknown order '{}' (expected as_given, shuffled or "
                    "forward_backward)", order);
@@ -86,12 +105,19 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
   }
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
   if (warn_every < 1) error->all(FLERR, "fix nscd: warn {} must be >= 1", warn_every);
-  options.dt = 1.0;    // validated for real in init(), with the run's timestep
+  solver->options.dt = 1.0;    // validated for real in init(), with the run's timestep
   try {
-    options.validate();
+    solver->options.validate();
   } catch (std::exception &e) {
     error->all(FLERR, "fix nscd: {}", e.what());
   }
+}
+
+FixNSCD::~FixNSCD() = default;
+
+const std::vector<nscd::Contact> &FixNSCD::contacts() const
+{
+  return solver->problem.contacts;
 }
 
 int FixNSCD::setmask()
@@ -108,17 +134,92 @@ void FixNSCD::init()
                "'pair_style nscd' and 'pair_coeff * * FRICTION'");
   if (!pair->compute_flag)
     error->all(FLERR, "fix nscd: pair_modify compute no switches off contact detection; remove it");
-  for (int f = 0; f < modify->nfix; f++)
-    if (modify->fix[f] != this && dynamic_cast<FixNSCD *>(modify->fix[f]))
+  for (Fix *other : modify->get_fix_list())
+    if (other != this && dynamic_cast<FixNSCD *>(other))
       error->all(FLERR, "fix nscd: only one fix nscd may be defined ({} and {}); one solver "
-                 "handles all grains and boundaries", modify->fix[f]->id, id);
+                 "handles all grains and boundaries", other->id, id);
   if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
+  if (update->whichflag == 2)
+    error->all(FLERR, "fix nscd does not work with minimize: rigid grains in contact have no "
+               "potential energy to minimise; let them settle with 'run' (unfix {} first to "
+               "minimise other parts of the system)", id);
   dt = update->dt;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    error->all(FLERR, "fix nscd: timestep {} must be positive and finite; set it with 'timestep DT'", dt);
   find_partners();
+  check_no_other_integrator();
   check_no_points_in_group();
   check_grains_are_consistent();
+}
+
+/* A grain also moved by another integrator (fix nve, fix rigid, ...) would move twice per
+   step: it gains energy and sinks into its neighbours. */
+void FixNSCD::check_no_other_integrator()
+{
+  for (Fix *other : modify->get_fix_list()) {
+    if (other == this || !other->time_integrate) continue;
+    tagint first_shared = MAXTAGINT, any_shared;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit) && avec->shape[i] != 0)
+        first_shared = std::min(first_shared, atom->tag[i]);
+    MPI_Allreduce(&first_shared, &any_shared, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+    if (any_shared != MAXTAGINT)
+      error->all(FLERR, "fix nscd: fix {} ({}) also moves grain ID {}, which fix nscd integrates: "
+                 "the grains would move twice per step; remove fix {} or give it a group "
+                 "without the grains", other->id, other->style, any_shared, other->id);
+  }
+}
+
+/* Grains are rigid bodies moved by contacts only: a bond or angle pulling on one (e.g. a
+   wire node bonded to a grain) is a deck error. Needs the run's bond lists. */
+void FixNSCD::check_no_bonds_on_grains()
+{
+  if (!atom->molecular) return;
+  tagint bad[2] = {MAXTAGINT, MAXTAGINT}, any[2];
+  auto note = [&](const int *atoms, int n) {
+    for (int k = 0; k < n; k++)
+      if (avec->shape[atoms[k]] != 0 && atom->tag[atoms[k]] < bad[0]) {
+        bad[0] = atom->tag[atoms[k]];
+        bad[1] = atom->tag[atoms[k == 0 ? 1 : 0]];
+      }
+  };
+  // (LAMMPS builds the lists of a kind only when its style is defined: without one, such
+  // bonds exert no force)
+  if (force->bond)
+    for (int n = 0; n < neighbor->nbondlist; n++) note(neighbor->bondlist[n], 2);
+  if (force->angle)
+    for (int n = 0; n < neighbor->nanglelist; n++) note(neighbor->anglelist[n], 3);
+  MPI_Allreduce(&bad[0], &any[0], 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (any[0] == MAXTAGINT) return;
+  if (bad[0] != any[0]) bad[1] = MAXTAGINT;
+  MPI_Allreduce(&bad[1], &any[1], 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  error->all(FLERR, "fix nscd: grain ID {} is in a bond or angle (with atom ID {}); bonds and "
+             "angles join wire nodes (shape 0) only, grains are rigid bodies moved by contacts",
+             any[0], any[1]);
+}
+
+/* Overlap present at the start is not pushed apart by the solver (contacts only stop
+   further approach): grains that overlap by more than a fifth of the smaller one's bounding
+   radius were placed wrongly. */
+void FixNSCD::warn_if_grains_overlap()
+{
+  double worst[3] = {0.0, 0.0, 0.0};    // overlap / smaller radius, the two atom IDs
+  for (const nscd::Contact &c : pair->contacts()) {
+    const double smaller = std::min(avec->radius[c.body_i], avec->radius[c.body_j]);
+    const double depth = -c.gap / smaller;
+    if (depth > worst[0]) worst[0] = depth, worst[1] = (double) c.key.tag_i, worst[2] = (double) c.key.tag_j;
+  }
+  std::vector<double> all(3 * comm->nprocs);
+  MPI_Allgather(worst, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, world);
+  for (int r = 0; r < comm->nprocs; r++)
+    if (all[3 * r] > worst[0]) std::copy(&all[3 * r], &all[3 * r + 3], worst);
+  if (worst[0] > 0.2 && comm->me == 0)
+    error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} of the smaller one's "
+                   "bounding radius at the start of the run; contacts keep overlap from growing "
+                   "but do not push it apart. Place the grains apart (e.g. on a coarser lattice)",
+                   (tagint) worst[1], (tagint) worst[2], worst[0]);
 }
 
 /* Every atom of the group must be a grain: points (wire nodes) belong to the wire fix.
@@ -160,8 +261,12 @@ void FixNSCD::check_grains_are_consistent()
 void FixNSCD::find_partners()
 {
   boundaries.clear();
-  for (int f = 0; f < modify->nfix; f++)
-    if (auto *b = dynamic_cast<NSCDBoundary *>(modify->fix[f])) boundaries.push_back(b);
+  boundary_fixes.clear();
+  for (Fix *other : modify->get_fix_list())
+    if (auto *b = dynamic_cast<NSCDBoundaryFix *>(other)) {
+      boundaries.push_back(&b->boundary());
+      boundary_fixes.push_back(other);
+    }
 }
 
 /* A run can start without init() (run ... pre no): partners may have changed. The contact
@@ -169,6 +274,8 @@ void FixNSCD::find_partners()
 void FixNSCD::setup(int vflag)
 {
   find_partners();
+  check_no_bonds_on_grains();
+  warn_if_grains_overlap();
   run_started = true;
   post_force(vflag);
   measure_kinetic_energy();
@@ -195,14 +302,16 @@ void FixNSCD::final_integrate()
   dt = update->dt;
   if (neighbor->ago == 0) check_no_points_in_group();
   exchange_mode = Exchange::state;
-  comm->forward_comm_fix(this, 12);
+  comm->forward_comm(this, 12);
   build_bodies();
   gather_contacts();
   count_shares();
   solve();
   move_grains();
+  exchange_mode = Exchange::motion;    // ghosts' new velocities: next step's activations
+  comm->forward_comm(this, 6);
   hand_back_forces();
-  warm_start.store(problem.contacts);
+  solver->warm_start.store(solver->problem.contacts);
   warn_if_unconverged();
   measure_kinetic_energy();
   warn_if_contacts_can_be_missed();
@@ -211,21 +320,18 @@ void FixNSCD::final_integrate()
 void FixNSCD::build_bodies()
 {
   const int ntotal = atom->nlocal + atom->nghost;
-  problem.bodies.resize(ntotal);
+  solver->problem.bodies.resize(ntotal);
   double **x = atom->x, **v = atom->v, **f = atom->f;
   for (int b = 0; b < ntotal; b++) {
-    nscd::SolverBody &body = problem.bodies[b];
+    nscd::SolverBody &body = solver->problem.bodies[b];
+    // From scratch: the slot may have held a boundary's body (the plate's, with locked x and
+    // y axes) on an earlier step with fewer ghosts.
+    body = nscd::SolverBody();
     body.position = vec3(x[b]);
     body.velocity = vec3(v[b]);
     body.angular_velocity = vec3(avec->omega[b]);
     const bool mobile = (atom->mask[b] & groupbit) && avec->shape[b] != 0;
-    if (!mobile) {    // not integrated here: moves with its own velocity, infinite mass
-      body.inv_mass = 0.0;
-      body.inv_inertia.setZero();
-      body.external_impulse.setZero();
-      body.external_angular_impulse.setZero();
-      continue;
-    }
+    if (!mobile) continue;    // not integrated here: moves with its own velocity, infinite mass
     const nscd::Vec3 moments = vec3(avec->inertia[b]);
     const nscd::Quat q = quat_of(avec->quat[b]);
     body.inv_mass = 1.0 / avec->rmass[b];
@@ -239,28 +345,31 @@ void FixNSCD::build_bodies()
         dt * (vec3(avec->torque[b]) + nscd::gyroscopic_torque(moments, q, body.angular_velocity));
   }
   global_bodies.clear();
-  for (NSCDBoundary *b : boundaries) {
+  global_body_fixes.clear();
+  for (size_t k = 0; k < boundaries.size(); k++) {
+    NSCDBoundary *b = boundaries[k];
     if (!b->has_body()) continue;
-    b->set_body_index((int) problem.bodies.size());
-    global_bodies.push_back((int) problem.bodies.size());
-    problem.bodies.push_back(b->body(dt));
+    global_body_fixes.push_back(boundary_fixes[k]);
+    b->set_body_index((int) solver->problem.bodies.size());
+    global_bodies.push_back((int) solver->problem.bodies.size());
+    solver->problem.bodies.push_back(b->body(dt));
   }
 }
 
 void FixNSCD::gather_contacts()
 {
-  problem.contacts = pair->contacts();
-  pair_count = problem.contacts.size();
+  solver->problem.contacts = pair->contacts();
+  pair_count = solver->problem.contacts.size();
   boundary_counts.assign(boundaries.size(), 0);
   for (size_t k = 0; k < boundaries.size(); k++) {
-    const size_t before = problem.contacts.size();
-    boundaries[k]->append_contacts(problem.contacts, pair->activation_distance());
-    boundary_counts[k] = (int) (problem.contacts.size() - before);
+    const size_t before = solver->problem.contacts.size();
+    boundaries[k]->append_contacts(solver->problem.contacts, pair->activation_distance(), dt);
+    boundary_counts[k] = (int) (solver->problem.contacts.size() - before);
   }
   warm_start_contacts();
   // Impulses scale with the step: after a `timestep` change, start from the same forces.
   if (warm_start_dt > 0.0 && warm_start_dt != dt)
-    for (nscd::Contact &c : problem.contacts) c.impulse *= dt / warm_start_dt;
+    for (nscd::Contact &c : solver->problem.contacts) c.impulse *= dt / warm_start_dt;
   warm_start_dt = dt;
 }
 
@@ -271,17 +380,17 @@ void FixNSCD::warm_start_contacts()
 {
   const bool changed_rank = contacts_may_have_changed_rank();    // on every solve: it tracks the lists
   // First step after read_restart: every rank holds every record, nothing to hand over.
-  const bool restored = !restored_contacts.empty();
+  const bool restored = !solver->restored_contacts.empty();
   if (restored) {
-    warm_start.store(restored_contacts);
-    restored_contacts.clear();
+    solver->warm_start.store(solver->restored_contacts);
+    solver->restored_contacts.clear();
   }
   if (!changed_rank || restored) {
-    warm_start.apply(problem.contacts);
+    solver->warm_start.apply(solver->problem.contacts);
     return;
   }
   nscd::WarmStartLeftovers leftovers;
-  warm_start.apply(problem.contacts, &leftovers);
+  solver->warm_start.apply(solver->problem.contacts, &leftovers);
   take_over_warm_starts(leftovers);
 }
 
@@ -304,8 +413,8 @@ void FixNSCD::take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers)
   bigint all[2];
   MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all[0] == 0 || all[1] == 0) return;
-  handed_over.store(gather_records(leftovers.unused, world, true));
-  handed_over.apply_to(problem.contacts, leftovers.missed);
+  solver->handed_over.store(gather_records(leftovers.unused, world, true));
+  solver->handed_over.apply_to(solver->problem.contacts, leftovers.missed);
 }
 
 /* Of the last solve's contacts: the pair style's list may be newer (a run's setup finds
@@ -328,19 +437,19 @@ int FixNSCD::boundary_of(size_t contact) const
    plate) sums over the ranks. */
 void FixNSCD::count_shares()
 {
-  for (nscd::SolverBody &body : problem.bodies) body.share = 0.0;
-  for (const nscd::Contact &c : problem.contacts) {
-    problem.bodies[c.body_i].share = 1.0;
-    if (c.body_j >= 0) problem.bodies[c.body_j].share = 1.0;
+  for (nscd::SolverBody &body : solver->problem.bodies) body.share = 0.0;
+  for (const nscd::Contact &c : solver->problem.contacts) {
+    solver->problem.bodies[c.body_i].share = 1.0;
+    if (c.body_j >= 0) solver->problem.bodies[c.body_j].share = 1.0;
   }
   exchange_mode = Exchange::share;
-  comm->reverse_comm_fix(this, 1);
-  comm->forward_comm_fix(this, 1);
+  comm->reverse_comm(this, 1);
+  comm->forward_comm(this, 1);
   for (int b : global_bodies) {
-    double mine = problem.bodies[b].share;
-    MPI_Allreduce(&mine, &problem.bodies[b].share, 1, MPI_DOUBLE, MPI_SUM, world);
+    double mine = solver->problem.bodies[b].share;
+    MPI_Allreduce(&mine, &solver->problem.bodies[b].share, 1, MPI_DOUBLE, MPI_SUM, world);
   }
-  for (nscd::SolverBody &body : problem.bodies) body.share = std::max(1.0, body.share);
+  for (nscd::SolverBody &body : solver->problem.bodies) body.share = std::max(1.0, body.share);
 }
 
 /* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of
@@ -348,52 +457,81 @@ void FixNSCD::count_shares()
    rank iterates on the same global velocities. The convergence test is global. */
 void FixNSCD::solve()
 {
-  options.dt = dt;
+  solver->options.dt = dt;
   try {
-    problem.prepare(options);
+    solver->problem.prepare(solver->options);
   } catch (std::exception &e) {    // the solver names local indices; say which grains
-    const nscd::Contact &first = problem.contacts.empty() ? nscd::Contact() : problem.contacts[0];
+    const nscd::Contact &first = solver->problem.contacts.empty() ? nscd::Contact() : solver->problem.contacts[0];
     error->one(FLERR, "fix nscd: bad contact problem ({}); grains of the first contact: IDs {} "
                "and {}", e.what(), first.key.tag_i, first.key.tag_j);
   }
   exchange_velocities();
-  report = nscd::SolveReport();
-  report.terms = global_terms();
-  report.residual = report.terms.residual();
-  while (report.residual > options.tolerance && report.sweeps < options.max_sweeps) {
-    problem.sweep();
-    report.sweeps++;
-    const bool last = report.sweeps == options.max_sweeps;
-    const bool check = last || report.sweeps % options.check_every == 0;
-    if (check || report.sweeps % exchange_every == 0) exchange_velocities();
+  solver->report = nscd::SolveReport();
+  solver->report.terms = global_terms();
+  solver->report.residual = solver->report.terms.residual();
+  while (solver->report.residual > solver->options.tolerance && solver->report.sweeps < solver->options.max_sweeps) {
+    solver->problem.sweep();
+    solver->report.sweeps++;
+    const bool last = solver->report.sweeps == solver->options.max_sweeps;
+    const bool check = last || solver->report.sweeps % solver->options.check_every == 0;
+    if (check || solver->report.sweeps % exchange_every == 0) exchange_velocities();
     if (!check) continue;    // a residual costs about as much as a sweep
-    report.terms = global_terms();
-    report.residual = report.terms.residual();
+    solver->report.terms = global_terms();
+    solver->report.residual = solver->report.terms.residual();
   }
-  report.converged = report.residual <= options.tolerance;
-  problem.finish();
+  solver->report.converged = solver->report.residual <= solver->options.tolerance;
+  if (!std::isfinite(solver->report.residual)) stop_on_non_finite_problem();
+  solver->problem.finish();
+}
+
+/* A residual of inf or NaN: some external force or velocity is not finite or so large that
+   the impulses overflow. Name the body with the largest external impulse. */
+void FixNSCD::stop_on_non_finite_problem()
+{
+  const std::vector<nscd::SolverBody> &bodies = solver->problem.bodies;
+  double mine[2] = {-1.0, -1.0};    // |external impulse| (inf if not finite), body
+  auto consider = [&](int b) {
+    const double size = bodies[b].external_impulse.allFinite() && bodies[b].velocity.allFinite()
+        ? bodies[b].external_impulse.norm() : INFINITY;
+    if (size > mine[0]) mine[0] = size, mine[1] = b < atom->nlocal ? (double) atom->tag[b] : -1.0 - b;
+  };
+  for (int b = 0; b < atom->nlocal; b++) consider(b);
+  if (comm->me == 0)
+    for (int b : global_bodies) consider(b);
+  double worst[2];
+  MPI_Allreduce(mine, worst, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
+  std::string culprit = fmt::format("grain ID {}", (tagint) worst[1]);
+  if (worst[1] < 0.0) {    // a boundary's own body: which fix?
+    const int index = (int) (-1.0 - worst[1]);
+    for (size_t k = 0; k < global_bodies.size(); k++)
+      if (global_bodies[k] == index) culprit = fmt::format("the body of fix {}", global_body_fixes[k]->id);
+  }
+  error->all(FLERR, "fix nscd: step {}: the contact problem has no finite solution (residual {}); "
+             "the largest external impulse, {:.3g}, acts on {}. Check the forces, the plate's load "
+             "and rate, and the timestep", update->ntimestep, solver->report.residual, worst[0],
+             culprit);
 }
 
 void FixNSCD::exchange_velocities()
 {
   exchange_mode = Exchange::correction;
-  comm->reverse_comm_fix(this, 6);
+  comm->reverse_comm(this, 6);
   // The owners now hold the sum of their copies' corrections; with mass splitting their
   // velocity changes by the mean.
   for (int b = 0; b < atom->nlocal; b++) {
-    nscd::SolverBody &body = problem.bodies[b];
+    nscd::SolverBody &body = solver->problem.bodies[b];
     if (body.share == 1.0) continue;
     const double excess = 1.0 - 1.0 / body.share;
-    body.velocity -= excess * problem.velocity_correction(b);
-    body.angular_velocity -= excess * problem.angular_velocity_correction(b);
+    body.velocity -= excess * solver->problem.velocity_correction(b);
+    body.angular_velocity -= excess * solver->problem.angular_velocity_correction(b);
   }
   exchange_mode = Exchange::velocity;
-  comm->forward_comm_fix(this, 6);
+  comm->forward_comm(this, 6);
   // A body every rank holds takes the corrections of all ranks' contacts.
   for (int b : global_bodies) {
-    nscd::SolverBody &body = problem.bodies[b];
+    nscd::SolverBody &body = solver->problem.bodies[b];
     double mine[6], all[6];
-    const nscd::Vec3 dv = problem.velocity_correction(b), dw = problem.angular_velocity_correction(b);
+    const nscd::Vec3 dv = solver->problem.velocity_correction(b), dw = solver->problem.angular_velocity_correction(b);
     for (int d = 0; d < 3; d++) {
       mine[d] = dv[d];
       mine[3 + d] = dw[d];
@@ -404,12 +542,12 @@ void FixNSCD::exchange_velocities()
       body.angular_velocity[d] += all[3 + d] / body.share - mine[3 + d];
     }
   }
-  problem.mark_synchronised();
+  solver->problem.mark_synchronised();
 }
 
 nscd::ResidualTerms FixNSCD::global_terms() const
 {
-  const nscd::ResidualTerms mine = problem.residual_terms();
+  const nscd::ResidualTerms mine = solver->problem.residual_terms();
   double sums[7] = {mine.error_squared, mine.scale_squared, (double) mine.contacts,
                     (double) mine.active, (double) mine.sticking, (double) mine.sliding,
                     (double) mine.local_failures};
@@ -432,12 +570,12 @@ void FixNSCD::move_grains()
   double **x = atom->x, **v = atom->v;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
-    const nscd::SolverBody &body = problem.bodies[i];
+    const nscd::SolverBody &body = solver->problem.bodies[i];
     nscd::Pose pose;
     pose.position = vec3(x[i]);
     pose.orientation = quat_of(avec->quat[i]);
     nscd::advance_pose(pose, vec3(v[i]), vec3(avec->omega[i]), body.velocity,
-                       body.angular_velocity, dt, options.theta);
+                       body.angular_velocity, dt, solver->options.theta);
     store(pose.position, x[i]);
     avec->quat[i][0] = pose.orientation.w();
     avec->quat[i][1] = pose.orientation.x();
@@ -448,7 +586,7 @@ void FixNSCD::move_grains()
   }
   size_t next_body = 0;    // global bodies were added in boundary order
   for (NSCDBoundary *b : boundaries) {
-    if (b->has_body()) b->take_body(problem.bodies[global_bodies[next_body++]], dt, options.theta);
+    if (b->has_body()) b->take_body(solver->problem.bodies[global_bodies[next_body++]], dt, solver->options.theta);
     b->advance(dt);
   }
 }
@@ -457,13 +595,15 @@ void FixNSCD::move_grains()
    pressure and compute stress/atom) and the boundaries' reactions. */
 void FixNSCD::hand_back_forces()
 {
-  const std::vector<nscd::Contact> &c = problem.contacts;
+  const std::vector<nscd::Contact> &c = solver->problem.contacts;
   if (vflag_global || vflag_atom) {    // (Fix::v_setup of this LAMMPS leaves vflag_either unset)
-    for (const nscd::Contact &contact : c)
-      tally_virial(contact.body_i, contact.body_j, contact.point, contact.impulse / dt);
+    for (const nscd::Contact &contact : c) {
+      const nscd::Vec3 force = contact.impulse / dt;
+      tally_virial(contact.body_i, contact.body_j, contact.point.data(), force.data());
+    }
     if (vflag_atom) {    // ghosts' shares go to their owners
       exchange_mode = Exchange::virial;
-      comm->reverse_comm_fix(this, 6);
+      comm->reverse_comm(this, 6);
     }
   }
   size_t first = pair_count;
@@ -475,10 +615,11 @@ void FixNSCD::hand_back_forces()
 
 /* Grain pair: (x_i - x_j) (x) F, half to each grain. Boundary (wall, plate): (x_i - contact
    point) (x) F, all to the grain, as LAMMPS' wall fixes do. */
-void FixNSCD::tally_virial(int i, int j, const nscd::Vec3 &point, const nscd::Vec3 &f)
+void FixNSCD::tally_virial(int i, int j, const double *point, const double *force)
 {
   if (j >= atom->nlocal + atom->nghost) j = nscd::kEnvironment;    // a boundary's own body
-  const nscd::Vec3 d = vec3(atom->x[i]) - (j >= 0 ? vec3(atom->x[j]) : point);
+  const nscd::Vec3 d = vec3(atom->x[i]) - vec3(j >= 0 ? atom->x[j] : point);
+  const nscd::Vec3 f = vec3(force);
   const double v[6] = {d.x() * f.x(), d.y() * f.y(), d.z() * f.z(),
                        d.x() * f.y(), d.x() * f.z(), d.y() * f.z()};
   if (vflag_global)
@@ -492,7 +633,7 @@ void FixNSCD::tally_virial(int i, int j, const nscd::Vec3 &point, const nscd::Ve
 
 void FixNSCD::warn_if_unconverged()
 {
-  if (report.converged) return;
+  if (solver->report.converged) return;
   unconverged_steps++;
   const bigint step = update->ntimestep;
   if (last_warning_step >= 0 && step - last_warning_step < warn_every) return;
@@ -500,8 +641,8 @@ void FixNSCD::warn_if_unconverged()
   if (comm->me == 0)
     error->warning(FLERR, "fix nscd: step {} ended unconverged: residual {:.3g} > tolerance {:.3g} "
                    "after {} sweeps ({} unconverged steps so far); raise max_sweeps, lower the "
-                   "timestep, or check the scene", step, report.residual, options.tolerance,
-                   report.sweeps, unconverged_steps);
+                   "timestep, or check the scene", step, solver->report.residual, solver->options.tolerance,
+                   solver->report.sweeps, unconverged_steps);
 }
 
 /* Contacts are found at the start of a step for gaps below the activation distance. Two
@@ -514,16 +655,18 @@ void FixNSCD::warn_if_contacts_can_be_missed()
       mine = std::max(mine, vec3(atom->v[i]).norm() + vec3(avec->omega[i]).norm() * avec->radius[i]);
   MPI_Allreduce(&mine, &max_step_travel, 1, MPI_DOUBLE, MPI_MAX, world);
   max_step_travel *= 2.0 * dt;    // two grains approaching each other
-  const double activation = pair->activation_distance();
-  if (max_step_travel <= activation) return;
+  const double needed = speculative_activation(pair->activation_distance(), max_step_travel / dt, dt);
+  const double covered = pair->activation_distance() + pair->reach_distance();
+  if (needed <= covered) return;
   const bigint step = update->ntimestep;
   if (last_speed_warning_step >= 0 && step - last_speed_warning_step < warn_every) return;
   last_speed_warning_step = step;
   if (comm->me == 0)
-    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step, more than "
-                   "the contact activation distance {:.3g}; contacts can be found late (overlap). "
-                   "Lower the timestep or raise 'pair_style nscd activation'", step,
-                   max_step_travel, activation);
+    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step; contacts "
+                   "are activated up to {:.3g} ahead (pair_style nscd activation + reach), so some "
+                   "can be found late (overlap). Raise 'pair_style nscd reach' to {:.3g} or lower "
+                   "the timestep", step, max_step_travel, covered,
+                   needed - pair->activation_distance());
 }
 
 void FixNSCD::measure_kinetic_energy()
@@ -545,14 +688,14 @@ void FixNSCD::measure_kinetic_energy()
 double FixNSCD::compute_vector(int n)
 {
   switch (n) {
-    case SWEEPS: return report.sweeps;
-    case RESIDUAL: return report.residual;
-    case MAX_INTERPENETRATION: return report.terms.max_interpenetration;
-    case CONTACTS: return (double) report.terms.contacts;
-    case ACTIVE: return (double) report.terms.active;
-    case STICKING: return (double) report.terms.sticking;
-    case SLIDING: return (double) report.terms.sliding;
-    case CONVERGED: return report.converged ? 1.0 : 0.0;
+    case SWEEPS: return solver->report.sweeps;
+    case RESIDUAL: return solver->report.residual;
+    case MAX_INTERPENETRATION: return solver->report.terms.max_interpenetration;
+    case CONTACTS: return (double) solver->report.terms.contacts;
+    case ACTIVE: return (double) solver->report.terms.active;
+    case STICKING: return (double) solver->report.terms.sticking;
+    case SLIDING: return (double) solver->report.terms.sliding;
+    case CONVERGED: return solver->report.converged ? 1.0 : 0.0;
     case KE_TRANSLATION: return kinetic_translational;
     case KE_ROTATION: return kinetic_rotational;
   }
@@ -566,7 +709,7 @@ int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
 {
   int m = 0;
   if (exchange_mode == Exchange::share) {
-    for (int k = 0; k < n; k++) buf[m++] = problem.bodies[list[k]].share;
+    for (int k = 0; k < n; k++) buf[m++] = solver->problem.bodies[list[k]].share;
     return m;
   }
   for (int k = 0; k < n; k++) {
@@ -574,8 +717,11 @@ int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
     if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
         for (int d = 0; d < 3; d++) buf[m++] = a[d];
+    } else if (exchange_mode == Exchange::motion) {
+      for (double *a : {atom->v[i], avec->omega[i]})
+        for (int d = 0; d < 3; d++) buf[m++] = a[d];
     } else {
-      const nscd::SolverBody &body = problem.bodies[i];
+      const nscd::SolverBody &body = solver->problem.bodies[i];
       for (int d = 0; d < 3; d++) buf[m++] = body.velocity[d];
       for (int d = 0; d < 3; d++) buf[m++] = body.angular_velocity[d];
     }
@@ -587,15 +733,18 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
   if (exchange_mode == Exchange::share) {
-    for (int i = first; i < first + n; i++) problem.bodies[i].share = buf[m++];
+    for (int i = first; i < first + n; i++) solver->problem.bodies[i].share = buf[m++];
     return;
   }
   for (int i = first; i < first + n; i++) {
     if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
         for (int d = 0; d < 3; d++) a[d] = buf[m++];
+    } else if (exchange_mode == Exchange::motion) {
+      for (double *a : {atom->v[i], avec->omega[i]})
+        for (int d = 0; d < 3; d++) a[d] = buf[m++];
     } else {
-      nscd::SolverBody &body = problem.bodies[i];
+      nscd::SolverBody &body = solver->problem.bodies[i];
       for (int d = 0; d < 3; d++) body.velocity[d] = buf[m++];
       for (int d = 0; d < 3; d++) body.angular_velocity[d] = buf[m++];
     }
@@ -614,11 +763,11 @@ int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
     return m;
   }
   if (exchange_mode == Exchange::share) {
-    for (int i = first; i < first + n; i++) buf[m++] = problem.bodies[i].share;
+    for (int i = first; i < first + n; i++) buf[m++] = solver->problem.bodies[i].share;
     return m;
   }
   for (int i = first; i < first + n; i++) {
-    const nscd::Vec3 dv = problem.velocity_correction(i), dw = problem.angular_velocity_correction(i);
+    const nscd::Vec3 dv = solver->problem.velocity_correction(i), dw = solver->problem.angular_velocity_correction(i);
     for (int d = 0; d < 3; d++) buf[m++] = dv[d];
     for (int d = 0; d < 3; d++) buf[m++] = dw[d];
   }
@@ -634,11 +783,11 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
     return;
   }
   if (exchange_mode == Exchange::share) {
-    for (int k = 0; k < n; k++) problem.bodies[list[k]].share += buf[m++];
+    for (int k = 0; k < n; k++) solver->problem.bodies[list[k]].share += buf[m++];
     return;
   }
   for (int k = 0; k < n; k++) {
-    nscd::SolverBody &body = problem.bodies[list[k]];
+    nscd::SolverBody &body = solver->problem.bodies[list[k]];
     for (int d = 0; d < 3; d++) body.velocity[d] += buf[m++];
     for (int d = 0; d < 3; d++) body.angular_velocity[d] += buf[m++];
   }
@@ -649,26 +798,32 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 void FixNSCD::write_restart(FILE *fp)
 {
   std::vector<nscd::ImpulseRecord> mine;
-  if (!restored_contacts.empty()) {    // read from a restart, not solved since: all on every rank
-    if (comm->me == 0) mine = restored_contacts;
+  if (!solver->restored_contacts.empty()) {    // read from a restart, not solved since: all on every rank
+    if (comm->me == 0) mine = solver->restored_contacts;
   } else {
-    for (const nscd::Contact &c : problem.contacts) mine.push_back(nscd::record_of(c));
+    for (const nscd::Contact &c : solver->problem.contacts) mine.push_back(nscd::record_of(c));
   }
   const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
-  if (comm->me == 0) {    // size of the block, then the record count, then the records
+  if (comm->me == 0) {
     const int count = (int) all.size();
-    const int size = (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord));
-    fwrite(&size, sizeof(int), 1, fp);
+    nscd_restart::write_header(fp, kRestartVersion, (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord)));
     fwrite(&count, sizeof(int), 1, fp);
     fwrite(all.data(), sizeof(nscd::ImpulseRecord), all.size(), fp);
   }
 }
 
-void FixNSCD::restart(char *buf)
+void FixNSCD::restart(char *block)
 {
   // read_restart hands every rank the block written above, after its size.
+  const char *buf = block;
+  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
+  if (version > kRestartVersion)
+    error->all(FLERR, "fix nscd {}: the restart file holds its contacts in format {}, this build "
+               "reads formats up to {}; use a newer build, or start without the stored warm "
+               "start ('unfix {}' before the run, then define it again)", id, version,
+               kRestartVersion, id);
   int count;
   std::memcpy(&count, buf, sizeof(int));
-  restored_contacts.resize(count);
-  std::memcpy(restored_contacts.data(), buf + sizeof(int), count * sizeof(nscd::ImpulseRecord));
+  solver->restored_contacts.resize(count);
+  std::memcpy(solver->restored_contacts.data(), buf + sizeof(int), count * sizeof(nscd::ImpulseRecord));
 }

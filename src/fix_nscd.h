@@ -14,16 +14,21 @@ FixStyle(nscd,FixNSCD);
 
 #include "fix.h"
 
-#include "solver/contact_problem.h"
-#include "solver/warm_start.h"
-
+#include <memory>
 #include <vector>
+
+namespace nscd {
+struct Contact;
+struct ResidualTerms;
+struct WarmStartLeftovers;
+}    // namespace nscd
 
 namespace LAMMPS_NS {
 
 class FixNSCD : public Fix {
  public:
   FixNSCD(class LAMMPS *, int, char **);
+  ~FixNSCD() override;
 
   int setmask() override;
   void init() override;
@@ -41,13 +46,18 @@ class FixNSCD : public Fix {
   void restart(char *) override;
 
   // The contacts of the last solve (grain-grain first, then boundaries), with impulses.
-  const std::vector<nscd::Contact> &contacts() const { return problem.contacts; }
+  const std::vector<nscd::Contact> &contacts() const;
   double timestep() const { return dt; }
   // 0 for a grain-grain contact, else k for the k-th boundary fix (in definition order).
   int boundary_of(size_t contact) const;
 
  private:
-  nscd::SolverOptions options;
+  // The contact problem, its solver's options and report, and the warm-start impulses,
+  // behind a pointer: style_fix.h pulls this header into LAMMPS' core, which need not
+  // compile lib/ and Eigen (fix_nscd.cpp).
+  struct Solver;
+  std::unique_ptr<Solver> solver;
+
   int exchange_every = 1;       // sweeps between ghost velocity exchanges
   int warn_every = 1000;        // steps between repeated "unconverged" warnings
   double dt = 0.0;
@@ -55,27 +65,28 @@ class FixNSCD : public Fix {
   class PairNSCD *pair = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
   std::vector<class NSCDBoundary *> boundaries;
+  std::vector<Fix *> boundary_fixes;       // the fix of each boundary
   size_t pair_count = 0;             // problem.contacts: pair_count grain pairs, then each
   std::vector<int> boundary_counts;  // boundary's in turn (as of the last solve)
   std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
+  std::vector<Fix *> global_body_fixes;  // their fixes
 
-  nscd::ContactProblem problem;
-  nscd::WarmStartCache warm_start;
-  nscd::WarmStartCache handed_over;    // other ranks' unused impulses, after a list rebuild
-  std::vector<nscd::ImpulseRecord> restored_contacts;    // warm start read from a restart file
   bigint lists_of_last_solve = -1;    // neighbor->lastcall at the last solve
   bool run_started = true;            // setup() builds new lists (after balance, ...)
 
-  enum class Exchange { state, share, correction, velocity, virial } exchange_mode = Exchange::state;
+  enum class Exchange { state, motion, share, correction, velocity, virial } exchange_mode = Exchange::state;
 
-  // diagnostics of the last step
-  nscd::SolveReport report;
+  // diagnostics of the last step (and the solver's report)
   bigint unconverged_steps = 0, last_warning_step = -1, last_speed_warning_step = -1;
   double max_step_travel = 0.0;    // largest 2 (|v| + |w| R) dt over the group, last step
   double kinetic_translational = 0.0, kinetic_rotational = 0.0;
   double warm_start_dt = 0.0;    // timestep of the stored warm-start impulses
 
   void find_partners();
+  void check_no_other_integrator();
+  void check_no_bonds_on_grains();
+  void warn_if_grains_overlap();
+  void stop_on_non_finite_problem();
   void check_grains_are_consistent();
   void check_no_points_in_group();
   void build_bodies();
@@ -89,7 +100,7 @@ class FixNSCD : public Fix {
   nscd::ResidualTerms global_terms() const;
   void move_grains();
   void hand_back_forces();
-  void tally_virial(int i, int j, const nscd::Vec3 &point, const nscd::Vec3 &force);
+  void tally_virial(int i, int j, const double *point, const double *force);
   void warn_if_unconverged();
   void warn_if_contacts_can_be_missed();
   void measure_kinetic_energy();

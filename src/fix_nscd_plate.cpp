@@ -8,7 +8,10 @@
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
+#include "nscd_arrays.h"
+#include "nscd_boundary.h"
 #include "nscd_contact.h"
+#include "nscd_restart.h"
 #include "update.h"
 
 #include <algorithm>
@@ -19,43 +22,86 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, NOUTPUTS };
+constexpr int kRestartVersion = 1;    // z, vz, elapsed time, z at the start
 }
+
+/* The plate as fix nscd and fix wire see it: a body of the contact problem. */
+class FixNSCDPlate::Plate final : public NSCDBoundary {
+ public:
+  explicit Plate(FixNSCDPlate &owner) : fix(owner), tag(boundary_tag(owner.id)) {}
+
+  void append_contacts(std::vector<nscd::Contact> &, double activation, double dt) override;
+  void take_impulses(const nscd::Contact *, int, double dt) override;
+  void advance(double) override {}
+  bool has_body() const override { return true; }
+  nscd::SolverBody body(double dt) const override;
+  void set_body_index(int index) override { body_index = index; }
+  void take_body(const nscd::SolverBody &, double dt, double theta) override;
+  nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
+  nscd::Vec3 surface_velocity() const override { return nscd::Vec3(0.0, 0.0, vz); }
+  double friction_coefficient() const override { return friction; }
+
+  double load() const { return load_start + load_rate * elapsed; }
+
+  FixNSCDPlate &fix;
+  double z = 0.0, vz = 0.0, z_start = 0.0;
+  double mass = 0.0, gravity = 0.0;
+  double load_start = 0.0, load_rate = 0.0;    // load F(t) = start + rate * elapsed time
+  double elapsed = 0.0;
+  double friction = 0.0, restitution = 0.0;
+  double reaction = 0.0;                       // z force of the grains on the plate
+  int body_index = -1;
+  std::int64_t tag;
+  AtomVecSpheropolyhedron *avec = nullptr;
+  nscd::ContactWorkspace workspace;
+};
 
 /* fix ID group nscd/plate Z mass M [load F0] [rate R] [gravity G] [friction MU]
    [restitution E] : the plate's lower face is the plane z = Z, the grains are below it; the
    load F0 + R t pushes it down, as does its weight M G. */
-FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), plate(std::make_unique<Plate>(*this))
 {
   vector_flag = 1;
   size_vector = NOUTPUTS;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  plate_tag = boundary_tag(id);
+  Plate &p = *plate;
   if (narg < 6 || strcmp(arg[4], "mass") != 0)
     error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix ID group nscd/plate Z mass M "
                "[load F0] [rate R] [gravity G] [friction MU] [restitution E]'");
-  z = z_start = utils::numeric(FLERR, arg[3], false, lmp);
-  mass = utils::numeric(FLERR, arg[5], false, lmp);
-  if (!(mass > 0.0) || !std::isfinite(mass))
-    error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", mass);
+  p.z = p.z_start = utils::numeric(FLERR, arg[3], false, lmp);
+  if (!std::isfinite(p.z)) error->all(FLERR, "fix nscd/plate: the height {} must be finite", arg[3]);
+  p.mass = utils::numeric(FLERR, arg[5], false, lmp);
+  if (!(p.mass > 0.0) || !std::isfinite(p.mass))
+    error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", p.mass);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd/plate: keyword '{}' needs a value", key);
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    if (key == "load") load_start = value;
-    else if (key == "rate") load_rate = value;
-    else if (key == "gravity") gravity = value;
-    else if (key == "friction") friction = value;
-    else if (key == "restitution") restitution = value;
+    if (!std::isfinite(value))
+      error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
+    if (key == "load") p.load_start = value;
+    else if (key == "rate") p.load_rate = value;
+    else if (key == "gravity") p.gravity = value;
+    else if (key == "friction") p.friction = value;
+    else if (key == "restitution") p.restitution = value;
     else
       error->all(FLERR, "fix nscd/plate: unknown keyword '{}' (expected load, rate, gravity, "
                  "friction, restitution)", key);
   }
-  if (!(friction >= 0.0) || !std::isfinite(friction))
-    error->all(FLERR, "fix nscd/plate: friction {} must be finite and >= 0", friction);
-  if (!(restitution >= 0.0 && restitution <= 1.0))
-    error->all(FLERR, "fix nscd/plate: restitution {} must be in [0, 1]", restitution);
+  if (!(p.friction >= 0.0) || !std::isfinite(p.friction))
+    error->all(FLERR, "fix nscd/plate: friction {} must be finite and >= 0", p.friction);
+  if (!(p.restitution >= 0.0 && p.restitution <= 1.0))
+    error->all(FLERR, "fix nscd/plate: restitution {} must be in [0, 1]", p.restitution);
+}
+
+FixNSCDPlate::~FixNSCDPlate() = default;
+
+NSCDBoundary &FixNSCDPlate::boundary()
+{
+  return *plate;
 }
 
 int FixNSCDPlate::setmask()
@@ -65,13 +111,14 @@ int FixNSCDPlate::setmask()
 
 void FixNSCDPlate::init()
 {
-  avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/plate");
-  if (modify->find_fix_by_style("^nscd$") < 0)
+  plate->avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/plate");
+  if (modify->get_fix_by_style("^nscd$").empty())
     error->all(FLERR, "fix nscd/plate {} needs fix nscd (which solves its contacts)", id);
 }
 
 void FixNSCDPlate::setup(int /*vflag*/)
 {
+  const double z = plate->z;
   tagint first_above = MAXTAGINT, any_above;
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && atom->x[i][2] >= z) first_above = std::min(first_above, atom->tag[i]);
@@ -81,27 +128,32 @@ void FixNSCDPlate::setup(int /*vflag*/)
                "above all grains and wire nodes of its group", id, any_above, z);
 }
 
-void FixNSCDPlate::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)
 {
   const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z), nscd::Vec3(0.0, 0.0, -1.0)};
   const ContactLaw law{friction, restitution};
+  Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    if (!(atom->mask[i] & fix.groupbit) || avec->shape[i] == 0) continue;
+    const double closing = (vec3(atom->v[i]) - nscd::Vec3(0.0, 0.0, vz)).norm() +
+        vec3(avec->omega[i]).norm() * avec->radius[i];
+    const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {
       set = nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), face, activation, workspace);
     } catch (std::exception &e) {
-      error->one(FLERR, "fix nscd/plate {}: contact with grain ID {} failed: {}", id, atom->tag[i], e.what());
+      fix.error->one(FLERR, "fix nscd/plate {}: contact with grain ID {} failed: {}", fix.id,
+                     atom->tag[i], e.what());
     }
     for (const nscd::ContactPoint &p : set)
-      contacts.push_back(make_contact(p, i, body_index, atom->tag[i], plate_tag, law));
+      contacts.push_back(make_contact(p, i, body_index, atom->tag[i], tag, law));
   }
 }
 
 /* The plate moves along z only and does not turn: its inverse mass acts on z alone and its
    inverse inertia is zero. The load of a step is the one at its end (implicit, as the
    contact forces), so that after the step f_ID[4] is the load the grains carried. */
-nscd::SolverBody FixNSCDPlate::body(double dt) const
+nscd::SolverBody FixNSCDPlate::Plate::body(double dt) const
 {
   nscd::SolverBody b;
   b.position = nscd::Vec3(0.0, 0.0, z);
@@ -109,18 +161,18 @@ nscd::SolverBody FixNSCDPlate::body(double dt) const
   b.inv_mass = 1.0 / mass;
   b.inv_mass_axes = nscd::Vec3(0.0, 0.0, 1.0);
   const double load_at_end = load() + load_rate * dt;
-  const double wire = wire_force_in(update->ntimestep).z();    // the wire pushing up on it
+  const double wire = wire_force_in(fix.update->ntimestep).z();    // the wire pushing up on it
   b.external_impulse = nscd::Vec3(0.0, 0.0, dt * (wire - load_at_end - mass * gravity));
   return b;
 }
 
-nscd::ContactPoint FixNSCDPlate::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
+nscd::ContactPoint FixNSCDPlate::Plate::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
 {
   const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z + tau * vz), nscd::Vec3(0.0, 0.0, -1.0)};
   return nscd::contact_sphere_plane(centre, radius, face);
 }
 
-void FixNSCDPlate::take_body(const nscd::SolverBody &solved, double dt, double theta)
+void FixNSCDPlate::Plate::take_body(const nscd::SolverBody &solved, double dt, double theta)
 {
   const double v_new = solved.velocity.z();
   z += dt * ((1.0 - theta) * vz + theta * v_new);
@@ -128,22 +180,23 @@ void FixNSCDPlate::take_body(const nscd::SolverBody &solved, double dt, double t
   elapsed += dt;
 }
 
-void FixNSCDPlate::take_impulses(const nscd::Contact *first, int count, double dt)
+void FixNSCDPlate::Plate::take_impulses(const nscd::Contact *first, int count, double dt)
 {
   double mine = 0.0;
   for (int k = 0; k < count; k++) mine -= first[k].impulse.z();    // on the plate
   mine /= dt;
-  MPI_Allreduce(&mine, &reaction, 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&mine, &reaction, 1, MPI_DOUBLE, MPI_SUM, fix.world);
 }
 
 double FixNSCDPlate::compute_vector(int n)
 {
+  const Plate &p = *plate;
   switch (n) {
-    case Z: return z;
-    case VZ: return vz;
-    case REACTION: return reaction + wire_force_in(update->ntimestep).z();    // grains + wire
-    case LOAD: return load();
-    case DISPLACEMENT: return z - z_start;
+    case Z: return p.z;
+    case VZ: return p.vz;
+    case REACTION: return p.reaction + p.wire_force_in(update->ntimestep).z();    // grains + wire
+    case LOAD: return p.load();
+    case DISPLACEMENT: return p.z - p.z_start;
   }
   return 0.0;
 }
@@ -152,18 +205,23 @@ double FixNSCDPlate::compute_vector(int n)
 void FixNSCDPlate::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double state[4] = {z, vz, elapsed, z_start};
-  const int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
+  const double state[4] = {plate->z, plate->vz, plate->elapsed, plate->z_start};
+  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
   fwrite(state, sizeof(double), 4, fp);
 }
 
-void FixNSCDPlate::restart(char *buf)
+void FixNSCDPlate::restart(char *block)
 {
+  const char *buf = block;
+  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
+  if (version > kRestartVersion)
+    error->all(FLERR, "fix nscd/plate {}: the restart file holds the plate in format {}, this "
+               "build reads formats up to {}; use a newer build or another fix ID", id, version,
+               kRestartVersion);
   double state[4];
   std::memcpy(state, buf, sizeof(state));
-  z = state[0];
-  vz = state[1];
-  elapsed = state[2];
-  z_start = state[3];
+  plate->z = state[0];
+  plate->vz = state[1];
+  plate->elapsed = state[2];
+  plate->z_start = state[3];
 }

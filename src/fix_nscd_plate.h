@@ -13,15 +13,16 @@ FixStyle(nscd/plate,FixNSCDPlate);
 #define LMP_FIX_NSCD_PLATE_H
 
 #include "fix.h"
-#include "nscd_boundary.h"
+#include "nscd_boundary_fix.h"
 
-#include "geometry/contact.h"
+#include <memory>
 
 namespace LAMMPS_NS {
 
-class FixNSCDPlate : public Fix, public NSCDBoundary {
+class FixNSCDPlate : public Fix, public NSCDBoundaryFix {
  public:
   FixNSCDPlate(class LAMMPS *, int, char **);
+  ~FixNSCDPlate() override;
 
   int setmask() override;
   void init() override;
@@ -30,30 +31,11 @@ class FixNSCDPlate : public Fix, public NSCDBoundary {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  void append_contacts(std::vector<nscd::Contact> &, double activation) override;
-  void take_impulses(const nscd::Contact *, int, double dt) override;
-  void advance(double) override {}
-  bool has_body() const override { return true; }
-  nscd::SolverBody body(double dt) const override;
-  void set_body_index(int index) override { body_index = index; }
-  void take_body(const nscd::SolverBody &, double dt, double theta) override;
-  nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
-  nscd::Vec3 surface_velocity() const override { return nscd::Vec3(0.0, 0.0, vz); }
-  double friction_coefficient() const override { return friction; }
+  NSCDBoundary &boundary() override;
 
  private:
-  double z = 0.0, vz = 0.0, z_start = 0.0;
-  double mass = 0.0, gravity = 0.0;
-  double load_start = 0.0, load_rate = 0.0;    // load F(t) = start + rate * elapsed time
-  double elapsed = 0.0;
-  double friction = 0.0, restitution = 0.0;
-  double reaction = 0.0;                       // z force of the grains on the plate
-  int body_index = -1;
-  std::int64_t plate_tag;
-  class AtomVecSpheropolyhedron *avec = nullptr;
-  nscd::ContactWorkspace workspace;
-
-  double load() const { return load_start + load_rate * elapsed; }
+  class Plate;    // motion, load, contacts and reaction (fix_nscd_plate.cpp)
+  std::unique_ptr<Plate> plate;
 };
 
 }    // namespace LAMMPS_NS

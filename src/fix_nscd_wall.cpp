@@ -5,7 +5,9 @@
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
 #include "nscd_arrays.h"
+#include "nscd_boundary.h"
 #include "nscd_contact.h"
+#include "nscd_restart.h"
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
@@ -18,6 +20,8 @@
 using namespace LAMMPS_NS;
 
 namespace {
+constexpr int kRestartVersion = 1;    // the kind (0 plane, 1 cylinder), then the reference point
+
 nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
 {
   return nscd::Vec3(utils::numeric(FLERR, arg[0], false, lmp), utils::numeric(FLERR, arg[1], false, lmp),
@@ -26,17 +30,44 @@ nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
 
 }    // namespace
 
+/* The wall as fix nscd and fix wire see it. */
+class FixNSCDWall::Wall final : public NSCDBoundary {
+ public:
+  explicit Wall(FixNSCDWall &owner) : fix(owner), tag(boundary_tag(owner.id)) {}
+
+  void append_contacts(std::vector<nscd::Contact> &, double activation, double dt) override;
+  void take_impulses(const nscd::Contact *, int, double dt) override;
+  void advance(double dt) override { reference_point() += dt * velocity; }
+  nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
+  nscd::Vec3 surface_velocity() const override { return velocity; }
+  double friction_coefficient() const override { return friction; }
+
+  bool inside(const nscd::Vec3 &x) const;
+  nscd::Vec3 &reference_point() { return kind == Kind::plane ? plane.point : cylinder.axis_point; }
+
+  FixNSCDWall &fix;
+  enum class Kind { plane, cylinder } kind = Kind::plane;
+  nscd::PlaneWall plane;
+  nscd::CylinderWall cylinder;
+  nscd::Vec3 velocity = nscd::Vec3::Zero();
+  double friction = 0.0, restitution = 0.0;
+  std::int64_t tag;                             // negative id in contact keys, from the fix ID
+  nscd::Vec3 reaction = nscd::Vec3::Zero();    // force of the grains on the wall
+  AtomVecSpheropolyhedron *avec = nullptr;
+  nscd::ContactWorkspace workspace;
+};
+
 /* fix ID group nscd/wall plane PX PY PZ NX NY NZ [options]
    fix ID group nscd/wall cylinder CX CY CZ AX AY AZ R [options]
    options: friction MU, restitution E, velocity VX VY VZ */
-FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), wall(std::make_unique<Wall>(*this))
 {
   vector_flag = 1;
   size_vector = 6;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  wall_tag = boundary_tag(id);
 
   const char *usage = "expected 'fix ID group nscd/wall plane PX PY PZ NX NY NZ' or 'fix ID group "
                       "nscd/wall cylinder CX CY CZ AX AY AZ R', then friction/restitution/velocity";
@@ -44,15 +75,16 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg
   int iarg;
   if (strcmp(arg[3], "plane") == 0) {
     if (narg < 10) error->all(FLERR, "Illegal fix nscd/wall plane command: {}", usage);
-    kind = Kind::plane;
-    plane.point = read_vec3(lmp, &arg[4]);
+    wall->kind = Wall::Kind::plane;
+    wall->plane.point = read_vec3(lmp, &arg[4]);
     const nscd::Vec3 n = read_vec3(lmp, &arg[7]);
     if (!(n.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the plane normal (0 0 0) has no direction");
-    plane.normal = n.normalized();
+    wall->plane.normal = n.normalized();
     iarg = 10;
   } else if (strcmp(arg[3], "cylinder") == 0) {
     if (narg < 11) error->all(FLERR, "Illegal fix nscd/wall cylinder command: {}", usage);
-    kind = Kind::cylinder;
+    wall->kind = Wall::Kind::cylinder;
+    nscd::CylinderWall &cylinder = wall->cylinder;
     cylinder.axis_point = read_vec3(lmp, &arg[4]);
     const nscd::Vec3 a = read_vec3(lmp, &arg[7]);
     if (!(a.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the cylinder axis (0 0 0) has no direction");
@@ -67,23 +99,32 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg
   while (iarg < narg) iarg = parse_option(narg, arg, iarg);
 }
 
+FixNSCDWall::~FixNSCDWall() = default;
+
+NSCDBoundary &FixNSCDWall::boundary()
+{
+  return *wall;
+}
+
 int FixNSCDWall::parse_option(int narg, char **arg, int iarg)
 {
   const std::string key = arg[iarg];
   if (key == "friction" && iarg + 1 < narg) {
-    friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (!(friction >= 0.0) || !std::isfinite(friction))
       error->all(FLERR, "fix nscd/wall: friction {} must be finite and >= 0", friction);
+    wall->friction = friction;
     return iarg + 2;
   }
   if (key == "restitution" && iarg + 1 < narg) {
-    restitution = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double restitution = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (!(restitution >= 0.0 && restitution <= 1.0))
       error->all(FLERR, "fix nscd/wall: restitution {} must be in [0, 1]", restitution);
+    wall->restitution = restitution;
     return iarg + 2;
   }
   if (key == "velocity" && iarg + 3 < narg) {
-    velocity = read_vec3(lmp, &arg[iarg + 1]);
+    wall->velocity = read_vec3(lmp, &arg[iarg + 1]);
     return iarg + 4;
   }
   error->all(FLERR, "fix nscd/wall: unknown or incomplete keyword '{}' (expected friction MU, "
@@ -107,8 +148,8 @@ int FixNSCDWall::modify_param(int narg, char **arg)
 
 void FixNSCDWall::init()
 {
-  avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/wall");
-  if (modify->find_fix_by_style("^nscd$") < 0)
+  wall->avec = AtomVecSpheropolyhedron::find(lmp, "fix nscd/wall");
+  if (modify->get_fix_by_style("^nscd$").empty())
     error->all(FLERR, "fix nscd/wall {} has no effect without fix nscd (which solves its "
                "contacts); define fix nscd as well", id);
 }
@@ -121,57 +162,56 @@ void FixNSCDWall::setup(int /*vflag*/)
   tagint first_outside = MAXTAGINT, any_outside;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
-    if (!inside(vec3(atom->x[i]))) first_outside = std::min(first_outside, atom->tag[i]);
+    if (!wall->inside(vec3(atom->x[i]))) first_outside = std::min(first_outside, atom->tag[i]);
   }
   MPI_Allreduce(&first_outside, &any_outside, 1, MPI_LMP_TAGINT, MPI_MIN, world);
   if (any_outside != MAXTAGINT)
     error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); "
                "check the wall's position and that its normal points into the domain", id,
-               any_outside, kind == Kind::plane ? "behind the plane" : "outside the cylinder");
+               any_outside, wall->kind == Wall::Kind::plane ? "behind the plane" : "outside the cylinder");
 }
 
-bool FixNSCDWall::inside(const nscd::Vec3 &x) const
+bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const
 {
   if (kind == Kind::plane) return (x - plane.point).dot(plane.normal) > 0.0;
   const nscd::Vec3 d = x - cylinder.axis_point;
   return (d - d.dot(cylinder.axis_direction) * cylinder.axis_direction).norm() < cylinder.radius;
 }
 
-void FixNSCDWall::append_contacts(std::vector<nscd::Contact> &contacts, double activation)
+void FixNSCDWall::Wall::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)
 {
   const ContactLaw law{friction, restitution};
+  Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+    if (!(atom->mask[i] & fix.groupbit) || avec->shape[i] == 0) continue;
+    const double closing = (vec3(atom->v[i]) - velocity).norm() + vec3(avec->omega[i]).norm() * avec->radius[i];
+    const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {
       set = kind == Kind::plane
           ? nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), plane, activation, workspace)
           : nscd::contact_grain_cylinder(avec->shape_of(i), avec->pose(i), cylinder, activation, workspace);
     } catch (std::exception &e) {
-      error->one(FLERR, "fix nscd/wall {}: contact with grain ID {} failed: {}", id, atom->tag[i], e.what());
+      fix.error->one(FLERR, "fix nscd/wall {}: contact with grain ID {} failed: {}", fix.id,
+                     atom->tag[i], e.what());
     }
     for (const nscd::ContactPoint &p : set) {
-      nscd::Contact c = make_contact(p, i, nscd::kEnvironment, atom->tag[i], wall_tag, law);
+      nscd::Contact c = make_contact(p, i, nscd::kEnvironment, atom->tag[i], tag, law);
       c.wall_velocity = velocity;
       contacts.push_back(c);
     }
   }
 }
 
-void FixNSCDWall::take_impulses(const nscd::Contact *first, int count, double dt)
+void FixNSCDWall::Wall::take_impulses(const nscd::Contact *first, int count, double dt)
 {
   nscd::Vec3 mine = nscd::Vec3::Zero();
   for (int k = 0; k < count; k++) mine -= first[k].impulse;    // impulse on the grain: minus on the wall
   mine /= dt;
-  MPI_Allreduce(mine.data(), reaction.data(), 3, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(mine.data(), reaction.data(), 3, MPI_DOUBLE, MPI_SUM, fix.world);
 }
 
-void FixNSCDWall::advance(double dt)
-{
-  reference_point() += dt * velocity;
-}
-
-nscd::ContactPoint FixNSCDWall::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
+nscd::ContactPoint FixNSCDWall::Wall::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
 {
   if (kind == Kind::plane) {
     nscd::PlaneWall moved = plane;
@@ -185,8 +225,8 @@ nscd::ContactPoint FixNSCDWall::touch_sphere(const nscd::Vec3 &centre, double ra
 
 double FixNSCDWall::compute_vector(int n)
 {
-  if (n < 3) return reaction[n] + wire_force_in(update->ntimestep)[n];    // grains + wire
-  return reference_point()[n - 3];
+  if (n < 3) return wall->reaction[n] + wall->wire_force_in(update->ntimestep)[n];    // grains + wire
+  return wall->reference_point()[n - 3];
 }
 
 /* Restart: the wall's kind and current reference point (it may have moved); the deck that
@@ -194,23 +234,28 @@ double FixNSCDWall::compute_vector(int n)
 void FixNSCDWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const nscd::Vec3 &p = reference_point();
-  const double state[4] = {kind == Kind::plane ? 0.0 : 1.0, p.x(), p.y(), p.z()};
-  const int size = sizeof(state);
-  fwrite(&size, sizeof(int), 1, fp);
+  const nscd::Vec3 &p = wall->reference_point();
+  const double state[4] = {wall->kind == Wall::Kind::plane ? 0.0 : 1.0, p.x(), p.y(), p.z()};
+  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
   fwrite(state, sizeof(double), 4, fp);
 }
 
-void FixNSCDWall::restart(char *buf)
+void FixNSCDWall::restart(char *block)
 {
+  const char *buf = block;
+  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
+  if (version > kRestartVersion)
+    error->all(FLERR, "fix nscd/wall {}: the restart file holds the wall in format {}, this "
+               "build reads formats up to {}; use a newer build or another fix ID", id, version,
+               kRestartVersion);
   double state[4];
   std::memcpy(state, buf, sizeof(state));
-  const Kind stored = state[0] == 0.0 ? Kind::plane : Kind::cylinder;
-  if (stored != kind) {
+  const Wall::Kind stored = state[0] == 0.0 ? Wall::Kind::plane : Wall::Kind::cylinder;
+  if (stored != wall->kind) {
     if (comm->me == 0)
       error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "
-                     "its position is not used", id, stored == Kind::plane ? "plane" : "cylinder");
+                     "its position is not used", id, stored == Wall::Kind::plane ? "plane" : "cylinder");
     return;
   }
-  reference_point() = nscd::Vec3(state[1], state[2], state[3]);
+  wall->reference_point() = nscd::Vec3(state[1], state[2], state[3]);
 }

@@ -12,15 +12,16 @@ FixStyle(nscd/wall,FixNSCDWall);
 #define LMP_FIX_NSCD_WALL_H
 
 #include "fix.h"
-#include "nscd_boundary.h"
+#include "nscd_boundary_fix.h"
 
-#include "geometry/contact.h"
+#include <memory>
 
 namespace LAMMPS_NS {
 
-class FixNSCDWall : public Fix, public NSCDBoundary {
+class FixNSCDWall : public Fix, public NSCDBoundaryFix {
  public:
   FixNSCDWall(class LAMMPS *, int, char **);
+  ~FixNSCDWall() override;
 
   int setmask() override;
   void init() override;
@@ -30,27 +31,13 @@ class FixNSCDWall : public Fix, public NSCDBoundary {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  void append_contacts(std::vector<nscd::Contact> &, double activation) override;
-  void take_impulses(const nscd::Contact *, int, double dt) override;
-  void advance(double dt) override;
-  nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
-  nscd::Vec3 surface_velocity() const override { return velocity; }
-  double friction_coefficient() const override { return friction; }
+  NSCDBoundary &boundary() override;
 
  private:
-  enum class Kind { plane, cylinder } kind;
-  nscd::PlaneWall plane;
-  nscd::CylinderWall cylinder;
-  nscd::Vec3 velocity = nscd::Vec3::Zero();
-  double friction = 0.0, restitution = 0.0;
-  std::int64_t wall_tag;          // negative id in contact keys, from the fix ID
-  nscd::Vec3 reaction = nscd::Vec3::Zero();    // force of the grains on the wall
-  class AtomVecSpheropolyhedron *avec = nullptr;
-  nscd::ContactWorkspace workspace;
+  class Wall;    // geometry, motion, contacts and reaction (fix_nscd_wall.cpp)
+  std::unique_ptr<Wall> wall;
 
-  nscd::Vec3 &reference_point() { return kind == Kind::plane ? plane.point : cylinder.axis_point; }
   int parse_option(int narg, char **arg, int iarg);
-  bool inside(const nscd::Vec3 &x) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -1,10 +1,11 @@
 /* fix wire: integrates elastic wire nodes (atoms of shape 0 joined by bond_style wire and
    angle_style wire) with the Gear-5 predictor-corrector on a subcycle of n substeps per
-   LAMMPS step (lib/wire/subcycle.h), with soft wire-wire and wire-grain contacts
-   (lib/wire/soft_contact.h, lib/geometry). The wire->grain forces and torques averaged over
-   the substeps are added to the grains' f and torque in post_force, so fix nscd takes them
-   as external forces. Runs on any number of MPI ranks: each contact is computed on the rank
-   owning the first node of its lower element (see find_candidates). See doc/fix_wire.md. */
+   LAMMPS step (lib/wire/subcycle.h), with soft wire-wire, wire-grain and wire-boundary
+   contacts (lib/wire/contact_model.h). This file is glue: it gathers the nodes, grains and
+   boundaries, calls lib/wire and scatters the forces, and does LAMMPS' communication,
+   restart and output. The wire->grain forces and torques averaged over the substeps go to
+   the grains' f and torque in post_force, so fix nscd takes them as external forces.
+   See doc/fix_wire.md. Only LAMMPS headers here: lib/ stays behind a pointer. */
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -17,15 +18,8 @@ FixStyle(wire,FixWire);
 
 #include "fix.h"
 
-#include "geometry/contact.h"
-#include "geometry/point_grid.h"
-#include "wire/soft_contact.h"
-#include "wire/stability.h"
-#include "wire/subcycle.h"
-
 #include <array>
-#include <cstdint>
-#include <map>
+#include <memory>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -39,6 +33,7 @@ class FixWire : public Fix {
   void init() override;
   void setup(int) override;
   void post_force(int) override;
+  void post_run() override;
   void reset_dt() override;
   double compute_vector(int) override;
   double memory_usage() override;
@@ -60,132 +55,71 @@ class FixWire : public Fix {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
 
-  double substep() const { return plan.dt_sp; }
-  int substeps() const { return plan.substeps; }
-
-  // Identity of a contact, stable across steps and restarts: the two node tags of
-  // element A (ascending), then element B's two node tags, or (grain tag, slot of the
-  // point: see kSlots); a node on a wall or the plate: (node tag, 0, boundary key < 0, 0).
-  using ContactKey = std::array<tagint, 4>;
+  double substep() const;
+  int substeps() const;
 
  private:
+  struct Lib;                   // lib/wire state (fix_wire.cpp)
+  std::unique_ptr<Lib> lib;
+
   // Gear state per atom: 18 scaled derivatives, then 1 if the state is initialised.
-  static constexpr int kGearColumns = nscd::wire::Gear5State::kNumDoubles + 1;
+  static constexpr int kGearColumns = 19;
   double **gear = nullptr;
-  double state_dt = 0.0;    // the step the stored scaled derivatives refer to
+  double state_dt = 0.0;        // the step the stored scaled derivatives refer to
 
   // options
-  nscd::wire::SoftContactLaw law;
   bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
-  double wire_radius = 0.0;
-  double node_damping = 0.0;
+  double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
   int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
-  double requested_dt_sp = 0.0;
-  double safety = 0.5;
-  double contacts_per_node = 2.0;
+  double requested_dt_sp = 0.0, safety = 0.5, contacts_per_node = 2.0;
 
   class BondWire *bond = nullptr;
   class AngleWire *angle = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
-
-  nscd::wire::SubcyclePlan plan;
   double stable_dt_sp = 0.0;
-  std::array<double, 6> corrector{};
 
-  // per step
-  nscd::wire::WireNodeSet nodes;
-  std::vector<int> node_atom;              // node k -> local atom index
-  std::vector<nscd::Vec3> step_start;      // per node: position at the start of the step
-  std::vector<nscd::Vec3> external_force;  // per node: atom f minus the wire's own elastic force
-  std::vector<double> fbuf;                // per local atom: 3 (node forces) or 6 (grain f, torque)
-  std::vector<double> vbuf;                // per local atom: node velocity (3)
-  std::vector<nscd::wire::GrainMotion> motion;    // per local grain
-  nscd::wire::GrainForceAccumulator grain_forces;
-  nscd::ContactWorkspace workspace;
-  enum class Comm { node_state, grain_velocity, node_force, grain_force } comm_mode = Comm::node_state;
+  // Index of each local atom (owned and ghost) among the wire nodes (-1: a grain), the
+  // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.
+  std::vector<int> node_of_atom, atom_of_node, atom_of_grain;
+  int owned_nodes = 0;
+  bigint indexed_at = -1;       // neighbour build the indices belong to
+  bool memories_on_every_rank = false;    // just read from a restart file
 
-  // Wire topology, the same on every rank: the elements as (lower tag, higher tag), sorted.
-  // Gathered at setup from the bond lists of all ranks.
+  // Global wire topology, the same on every rank: (lower tag, higher tag) of each element.
   std::vector<std::array<tagint, 2>> elements;
-  double longest_element = 0.0;    // rest or current, the longer, at setup
+  double longest_element = 0.0;
 
-  // One copy of an element on this rank: nodes a (first node, or an image of it) and b
-  // (the image of the second node closest to a).
-  struct ElementImage {
-    int a, b;
-    int element;    // index in `elements`
-    nscd::Vec3 centre;
-    double half;    // half length
-  };
-  std::vector<ElementImage> images;
-  nscd::PointGrid image_grid, grain_grid;
-  std::vector<int> grain_atom;    // grain_grid point -> local atom index
+  enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force } comm_mode = Comm::node_state;
+  bool counting_comm = false;                // the subcycle's communication: counted
+  std::vector<double> grain_force_buffer;    // 6 per local atom
 
-  // The walls and the loading plate (fixes with NSCDBoundary) the wire can touch.
-  struct BoundaryLink {
-    class NSCDBoundary *boundary;
-    int groupbit;                         // the nodes it touches: those of its fix group
-    tagint key;                           // < 0, from the fix ID: for contact keys
-    nscd::wire::SoftContactLaw law;       // fix wire's, with the boundary's friction
-  };
-  std::vector<BoundaryLink> boundaries;
-
-  // Friction histories of one pair: a wire-grain pair has a slot per point it can touch
-  // with (its start sphere, its end sphere, two points inside), other pairs one point.
-  static constexpr int kSlots = 4;
-  struct Candidate {
-    enum class Kind : std::uint8_t { wire_wire, wire_grain, wire_boundary } kind;
-    int a1, a2;    // element A's nodes (local indices), or (node, -1) on a boundary
-    int b1, b2;    // element B's nodes, (grain, -1), or (index in boundaries, -1)
-    ContactKey key;    // of the pair; histories are kept under history_key()
-    std::array<nscd::wire::TangentialHistory, kSlots> history;
-  };
-  static int slots_of(const Candidate &c) { return c.kind == Candidate::Kind::wire_grain ? kSlots : 1; }
-  static ContactKey history_key(const Candidate &c, int slot);
-  std::vector<Candidate> candidates;
-  std::map<ContactKey, nscd::wire::TangentialHistory> histories;    // between steps
-  bigint histories_placed_at = -1;    // neighbor build after which histories were handed over
-  bool histories_on_every_rank = false;    // just read from a restart file
-
-  // diagnostics of the last substep; see compute_vector()
   std::array<double, 13> diagnostics{};
-  bool warned_fast_motion = false;    // this run
+  bool warned_fast_motion = false;
+
+  // fix wire's own timing of the run (printed after it): seconds, node-substeps, doubles sent
+  enum Timing { T_TOTAL, T_CPU, T_CONTACTS, T_ELASTIC, T_INTEGRATION, T_COMM, T_COMM_STEP, T_NODE_SUBSTEPS,
+                T_SENT, T_SENT_ALL_ATOMS, N_TIMING };
+  std::array<double, N_TIMING> timing{};
+  bigint substeps_run = 0;
+  int rebuilds_at_start = 0;
 
   void parse_option(int narg, char **arg, int &iarg);
   void check_partners();
-  bool acts_on_nodes(const Fix *other) const;
+  void find_boundaries();
   void plan_substeps();
-  nscd::wire::WireStiffness stiffness() const;
-  void check_ghost_cutoff();
-  void check_motion_within_skin();
+  void make_contact_model();
+  void gather_elements();
   void rescale_states(double new_dt);
 
+  void index_atoms();
   void load_nodes();
   void store_nodes();
-  void measure_external_forces();
-  void gather_elements();
-  bool joined(tagint p, tagint q) const;
-  void hand_over_histories();
-  void share_grain_velocities();
-  void find_candidates();
-  void locate_element_images();
-  void find_wire_grain_candidates(std::vector<Candidate> &found);
-  void find_wire_wire_candidates(std::vector<Candidate> &found);
-  void find_boundaries();
-  void find_wire_boundary_candidates(std::vector<Candidate> &found);
-  void sum_diagnostics_over_ranks();
-  void substep_forces(const nscd::wire::SubstepInfo &info, const std::vector<nscd::Vec3> &x,
-                      const std::vector<nscd::Vec3> &v, std::vector<nscd::Vec3> &f);
-  void share_node_state();
-  double add_elastic_forces(double *energy_axial, double *energy_bending);
-  void add_contact_forces(double tau, double dt);
-  bool wire_grain_force(Candidate &c, double tau, double dt, double &energy);
-  bool wire_wire_force(Candidate &c, double dt, double &energy);
-  bool wire_boundary_force(Candidate &c, double tau, double dt, double &energy);
-  void hand_forces_to_boundaries();
-  void sum_ghost_forces(int columns);
-  void hand_forces_to_grains();
-  void keep_histories();
+  void update_scene(bool reindexed);
+  void hand_over_memories();
+  void check_motion_within_skin();
+  void hand_forces();
+  void communicate(Comm mode, bool reverse, bool counted = false);
+  int comm_fields(int i, double *field[2]);
 };
 
 }    // namespace LAMMPS_NS

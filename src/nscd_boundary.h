@@ -1,6 +1,6 @@
-/* What fix nscd needs from a fix that puts boundaries (walls, the loading plate) into the
-   contact problem. Such a fix derives from Fix and from this interface; fix nscd finds it
-   among the defined fixes. */
+/* What fix nscd and fix wire need from a boundary (a wall, the loading plate) of the contact
+   problem. A fix that puts one there derives from NSCDBoundaryFix (nscd_boundary_fix.h) and
+   hands out an object with this interface, which it owns. */
 
 #ifndef LMP_NSCD_BOUNDARY_H
 #define LMP_NSCD_BOUNDARY_H
@@ -16,11 +16,11 @@ namespace LAMMPS_NS {
 
 class NSCDBoundary {
  public:
-  virtual ~NSCDBoundary() = default;
 
   // Appends the contacts of the boundary with OWNED grains (so each contact is on exactly
-  // one rank). body_i is the local atom index, body_j = nscd::kEnvironment.
-  virtual void append_contacts(std::vector<nscd::Contact> &contacts, double activation) = 0;
+  // one rank). body_i is the local atom index, body_j = nscd::kEnvironment. Each grain's
+  // activation is speculative_activation(activation, its closing speed, dt).
+  virtual void append_contacts(std::vector<nscd::Contact> &contacts, double activation, double dt) = 0;
 
   // After the solve: the contacts this boundary appended, with their solved impulses, in
   // the order it appended them; dt turns impulses into forces. Called on every rank.
@@ -57,6 +57,9 @@ class NSCDBoundary {
   {
     return step == wire_force_step ? wire_force : nscd::Vec3::Zero();
   }
+
+ protected:
+  ~NSCDBoundary() = default;    // its fix owns it, never deleted through this interface
 
  private:
   nscd::Vec3 wire_force = nscd::Vec3::Zero();

@@ -5,22 +5,36 @@
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "force.h"
 #include "memory.h"
 #include "neigh_list.h"
-#include "neigh_request.h"
 #include "neighbor.h"
+#include "update.h"
 
+#include "nscd_arrays.h"
 #include "nscd_contact.h"
+#include "nscd_restart.h"
 
+#include "geometry/contact.h"
+#include "shape/shape_library.h"
+#include "solver/contact_problem.h"
+
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <utility>
 
 using namespace LAMMPS_NS;
 
-PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp)
+struct PairNSCD::Found {
+  std::vector<nscd::Contact> contacts;
+  nscd::ContactWorkspace workspace;
+};
+
+PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp), found(std::make_unique<Found>())
 {
   single_enable = 0;
   restartinfo = 1;
@@ -38,6 +52,11 @@ PairNSCD::~PairNSCD()
   }
 }
 
+const std::vector<nscd::Contact> &PairNSCD::contacts() const
+{
+  return found->contacts;
+}
+
 void PairNSCD::allocate()
 {
   allocated = 1;
@@ -53,25 +72,41 @@ void PairNSCD::allocate()
     }
 }
 
-/* pair_style nscd [activation D | activation/fraction F] */
+/* pair_style nscd [activation D | activation/fraction F] [reach D | reach/fraction F] */
 void PairNSCD::settings(int narg, char **arg)
 {
   activation_given = -1.0;
   activation_fraction = 0.1;
+  reach_given = -1.0;
+  reach_fraction = 0.5;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (strcmp(arg[iarg], "activation") == 0) {
-      if (value < 0.0) error->all(FLERR, "pair_style nscd: activation {} must be >= 0", value);
+      if (!(value >= 0.0) || !std::isfinite(value))
+        error->all(FLERR, "pair_style nscd: activation {} must be finite and >= 0", value);
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
-      if (value < 0.0) error->all(FLERR, "pair_style nscd: activation/fraction {} must be >= 0", value);
+      if (!(value >= 0.0 && value <= 1.0))
+        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, 1] (a fraction of "
+                   "the smallest grain's bounding radius); for fast grains lower the timestep",
+                   value);
       activation_given = -1.0;
       activation_fraction = value;
+    } else if (strcmp(arg[iarg], "reach") == 0) {
+      if (!(value >= 0.0) || !std::isfinite(value))
+        error->all(FLERR, "pair_style nscd: reach {} must be finite and >= 0", value);
+      reach_given = value;
+    } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
+      if (!(value >= 0.0 && value <= 20.0))
+        error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, 20] (a multiple of the "
+                   "smallest grain's bounding radius)", value);
+      reach_given = -1.0;
+      reach_fraction = value;
     } else {
       error->all(FLERR, "Illegal pair_style nscd command: unknown keyword '{}' (expected "
-                 "activation or activation/fraction)", arg[iarg]);
+                 "activation, activation/fraction, reach or reach/fraction)", arg[iarg]);
     }
   }
 }
@@ -117,20 +152,52 @@ void PairNSCD::init_style()
   if (avec->shapes().empty())
     error->all(FLERR, "pair_style nscd: the shape library is empty; load shapes with "
                "'shapes read' or 'shapes random'");
-  activation = activation_given;
-  if (activation < 0.0) {
-    double smallest = avec->shapes().shape(1).bounding_radius;
-    for (int id = 2; id <= avec->shapes().size(); id++)
-      smallest = std::min(smallest, avec->shapes().shape(id).bounding_radius);
-    activation = activation_fraction * smallest;
-  }
-  neighbor->request(this, instance_me);
+  double smallest = avec->shapes().shape(1).bounding_radius;
+  for (int id = 2; id <= avec->shapes().size(); id++)
+    smallest = std::min(smallest, avec->shapes().shape(id).bounding_radius);
+  activation = activation_given >= 0.0 ? activation_given : activation_fraction * smallest;
+  reach = reach_given >= 0.0 ? reach_given : reach_fraction * smallest;
+  const double largest = avec->shapes().max_bounding_radius();
+  if (activation > 2.0 * largest)
+    error->all(FLERR, "pair_style nscd: activation {} is larger than the largest grain ({} across): "
+               "the neighbour lists would hold far grains; use at most {}", activation,
+               2.0 * largest, 2.0 * largest);
+  if (reach > 20.0 * largest)
+    error->all(FLERR, "pair_style nscd: reach {} is more than 10 grains ({} across): lower the "
+               "timestep instead", reach, 2.0 * largest);
+  check_periodic_box_holds_grains();
+  neighbor->add_request(this);
   // Contacts are found from the neighbour list every step: a stale list misses them.
   if ((neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check) && comm->me == 0)
     error->warning(FLERR, "pair_style nscd: the neighbour list may be rebuilt too late "
                    "(neigh_modify every {} delay {} check {}); contacts can be missed. Use "
                    "'neigh_modify every 1 delay 0 check yes'", neighbor->every, neighbor->delay,
                    neighbor->dist_check ? "yes" : "no");
+}
+
+/* A grain wider than a periodic box touches its own image: a rigid body cannot. The widths
+   are those between opposite faces (also of a triclinic box). */
+void PairNSCD::check_periodic_box_holds_grains()
+{
+  double mine = 0.0, widest = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) mine = std::max(mine, avec->radius[i]);
+  MPI_Allreduce(&mine, &widest, 1, MPI_DOUBLE, MPI_MAX, world);
+  const double a[3] = {domain->xprd, 0.0, 0.0}, b[3] = {domain->xy, domain->yprd, 0.0},
+               c[3] = {domain->xz, domain->yz, domain->zprd};
+  const double *edges[3] = {a, b, c};
+  const double volume = domain->xprd * domain->yprd * domain->zprd;
+  const char *names = "xyz";
+  for (int d = 0; d < 3; d++) {
+    if (!domain->periodicity[d]) continue;
+    const double *u = edges[(d + 1) % 3], *w = edges[(d + 2) % 3];
+    const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const double width = volume / std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    if (width < 2.0 * widest + activation)
+      error->all(FLERR, "pair_style nscd: the periodic box is {:.6g} wide in {}, but a grain is up "
+                 "to {:.6g} across (plus the activation distance {:.6g}): it would touch its own "
+                 "image. Make the box wider or the boundary non-periodic", width, names[d],
+                 2.0 * widest, activation);
+  }
 }
 
 double PairNSCD::init_one(int i, int j)
@@ -140,8 +207,9 @@ double PairNSCD::init_one(int i, int j)
                "a friction coefficient)", i, j);
   mu[j][i] = mu[i][j];
   restitution_coeff[j][i] = restitution_coeff[i][j];
-  // Grains of any shape may carry any type: the neighbour cutoff covers the largest pair.
-  return 2.0 * avec->shapes().max_bounding_radius() + activation;
+  // Grains of any shape may carry any type: the neighbour cutoff covers the largest pair,
+  // and the speculative activation up to `reach` beyond the smallest.
+  return 2.0 * avec->shapes().max_bounding_radius() + activation + reach;
 }
 
 /* Grain-grain contacts of this step, over the half neighbour list (newton on: each pair
@@ -149,7 +217,7 @@ double PairNSCD::init_one(int i, int j)
 void PairNSCD::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  found.clear();
+  found->contacts.clear();
   const int inum = list->inum;
   for (int ii = 0; ii < inum; ii++) {
     const int i = list->ilist[ii];
@@ -173,26 +241,33 @@ void PairNSCD::add_grain_contacts(int i, int j)
   double **x = atom->x;
   const nscd::Spheropolyhedron &shape_i = avec->shape_of(i), &shape_j = avec->shape_of(j);
   const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+  // Speculative activation from the pair's closing speed, within the reach that the
+  // neighbour cutoff covers (fix nscd warns when that is not enough).
+  const double closing = (vec3(atom->v[i]) - vec3(atom->v[j])).norm() +
+      vec3(avec->omega[i]).norm() * shape_i.bounding_radius + vec3(avec->omega[j]).norm() * shape_j.bounding_radius;
+  const double pair_activation = std::min(speculative_activation(activation, closing, update->dt),
+                                          activation + reach);
   // The shapes' own bounding radii, not the per-atom radius a `set diameter` could change.
-  const double reach = shape_i.bounding_radius + shape_j.bounding_radius + activation;
-  if (dx * dx + dy * dy + dz * dz >= reach * reach) return;
+  const double centres = shape_i.bounding_radius + shape_j.bounding_radius + pair_activation;
+  if (dx * dx + dy * dy + dz * dz >= centres * centres) return;
   nscd::ContactSet set;
   try {
-    set = nscd::contact_grains(shape_i, avec->pose(i), shape_j, avec->pose(j), activation, workspace);
+    set = nscd::contact_grains(shape_i, avec->pose(i), shape_j, avec->pose(j), pair_activation,
+                               found->workspace);
   } catch (std::exception &e) {
     error->one(FLERR, "pair_style nscd: contact of atoms {} and {} failed: {}", atom->tag[i],
                atom->tag[j], e.what());
   }
   const ContactLaw law{mu[atom->type[i]][atom->type[j]], restitution_coeff[atom->type[i]][atom->type[j]]};
   for (const nscd::ContactPoint &p : set)
-    found.push_back(make_contact(p, i, j, atom->tag[i], atom->tag[j], law));
+    found->contacts.push_back(make_contact(p, i, j, atom->tag[i], atom->tag[j], law));
 }
 
 /* For `neighbor multi`: grains of bounding radii ri and rj interact within ri + rj plus the
    activation distance. */
 double PairNSCD::radii2cut(double ri, double rj)
 {
-  return ri + rj + activation;
+  return ri + rj + activation + reach;
 }
 
 void PairNSCD::write_restart(FILE *fp)
@@ -227,20 +302,41 @@ void PairNSCD::read_restart(FILE *fp)
     }
 }
 
+/* Settings, version 1: {kMagic, 1}, then activation given and fraction, reach given and
+   fraction. Files written before versions hold the two activation values only. */
 void PairNSCD::write_restart_settings(FILE *fp)
 {
-  fwrite(&activation_given, sizeof(double), 1, fp);
-  fwrite(&activation_fraction, sizeof(double), 1, fp);
+  const std::int32_t header[2] = {nscd_restart::kMagic, 1};
+  const double values[4] = {activation_given, activation_fraction, reach_given, reach_fraction};
+  fwrite(header, sizeof(std::int32_t), 2, fp);
+  fwrite(values, sizeof(double), 4, fp);
 }
 
 void PairNSCD::read_restart_settings(FILE *fp)
 {
+  double values[4] = {-1.0, 0.1, -1.0, 0.5};
+  int version = 0;
   if (comm->me == 0) {
-    utils::sfread(FLERR, &activation_given, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &activation_fraction, sizeof(double), 1, fp, nullptr, error);
+    char first[8];    // the header, or the first double of a file without one
+    utils::sfread(FLERR, first, 1, 8, fp, nullptr, error);
+    const char *cursor = first;
+    version = nscd_restart::read_version(cursor);
+    if (version == 0) {    // activation given, then its fraction
+      std::memcpy(&values[0], first, sizeof(double));
+      utils::sfread(FLERR, &values[1], sizeof(double), 1, fp, nullptr, error);
+    } else {
+      utils::sfread(FLERR, values, sizeof(double), 4, fp, nullptr, error);
+    }
   }
-  MPI_Bcast(&activation_given, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&activation_fraction, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&version, 1, MPI_INT, 0, world);
+  if (version > 1)
+    error->all(FLERR, "pair_style nscd: the restart file holds settings in format {}, this build "
+               "reads formats up to 1; use a newer build", version);
+  MPI_Bcast(values, 4, MPI_DOUBLE, 0, world);
+  activation_given = values[0];
+  activation_fraction = values[1];
+  reach_given = values[2];
+  reach_fraction = values[3];
 }
 
 void *PairNSCD::extract(const char *name, int &dim)

@@ -14,10 +14,12 @@ PairStyle(nscd,PairNSCD);
 
 #include "pair.h"
 
-#include "geometry/contact.h"
-#include "solver/contact_problem.h"
-
+#include <memory>
 #include <vector>
+
+namespace nscd {
+struct Contact;
+}
 
 namespace LAMMPS_NS {
 
@@ -36,12 +38,19 @@ class PairNSCD : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
-  double radii2cut(double, double) override;
+  // Cutoff of `neighbor multi` collections. Overrides Pair::radii2cut of LAMMPS up to
+  // 29 Aug 2024 / 4 Feb 2025 (no `override`: LAMMPS 4 Jul 2026 dropped it and sums the two
+  // radii itself, so there the activation distance must fit in the neighbour skin).
+  double radii2cut(double, double);
 
   // Grain-grain contacts found by the last compute(): body indices are local atom
   // indices (owned or ghost), keys are (tag, tag, feature) canonical for warm starting.
-  const std::vector<nscd::Contact> &contacts() const { return found; }
-  double activation_distance() const { return activation; }
+  const std::vector<nscd::Contact> &contacts() const;
+  double activation_distance() const { return activation; }    // the smallest, for every pair
+  // How far past `activation` the speculative activation of a pair may reach: the
+  // neighbour cutoff includes it, so every pair that close is in the list.
+  double reach_distance() const { return reach; }
+
   double friction(int itype, int jtype) const { return mu[itype][jtype]; }
   double restitution(int itype, int jtype) const { return restitution_coeff[itype][jtype]; }
 
@@ -49,13 +58,19 @@ class PairNSCD : public Pair {
   double activation_given = -1.0;    // from `activation D`; < 0: use the fraction
   double activation_fraction = 0.1;  // of the smallest bounding radius in the library
   double activation = 0.0;           // in use, set by init_style()
+  double reach_given = -1.0;         // from `reach D`; < 0: use reach_fraction
+  double reach_fraction = 0.5;       // of the smallest bounding radius in the library
+  double reach = 0.0;                // in use, set by init_style()
   double **mu = nullptr, **restitution_coeff = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
-  std::vector<nscd::Contact> found;
-  nscd::ContactWorkspace workspace;
+  // The contacts of the last compute() and the geometry's scratch space, behind a pointer:
+  // style_pair.h pulls this header into LAMMPS' core, which need not compile lib/ and Eigen.
+  struct Found;
+  std::unique_ptr<Found> found;
 
   void allocate();
   void add_grain_contacts(int i, int j);
+  void check_periodic_box_holds_grains();
 };
 
 }    // namespace LAMMPS_NS

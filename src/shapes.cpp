@@ -13,6 +13,7 @@
 #include "shape/random_grain.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -67,8 +68,12 @@ void Shapes::command(int narg, char **arg)
 
 void Shapes::broadcast(std::string &text)
 {
-  int n = (int) text.size();
-  MPI_Bcast(&n, 1, MPI_INT, 0, world);
+  bigint size = (bigint) text.size();
+  MPI_Bcast(&size, 1, MPI_LMP_BIGINT, 0, world);
+  if (size > INT_MAX)    // one MPI message, and the restart file stores it as one string
+    error->all(FLERR, "shapes: the shape library is too large to send ({} bytes); use fewer "
+               "or simpler shapes (fewer vertices), or reuse shapes for many grains", size);
+  const int n = (int) size;
   text.resize(n);
   MPI_Bcast(&text[0], n, MPI_CHAR, 0, world);
 }
@@ -83,9 +88,12 @@ void Shapes::read(int narg, char **arg)
     try {
       nscd::ShapeLibrary parsed;
       parsed.read_file(arg[0]);
+      nscd::ShapeLibrary all = avec->shapes();    // names must be new to the loaded library
+      all.append(parsed);
       text = parsed.serialize();
     } catch (std::exception &e) {
       problem = e.what();
+      if (problem.rfind(arg[0], 0) != 0) problem = std::string(arg[0]) + ": " + problem;
     }
   }
   broadcast(problem);
@@ -105,9 +113,14 @@ void Shapes::random(int narg, char **arg)
   if (narg < 3 || strcmp(arg[1], "seed") != 0)
     error->all(FLERR, "Illegal shapes random command: expected 'shapes random N seed SEED "
                "[vertices NMIN NMAX] [size DMIN DMAX] [axes B/A C/A] [radius R]'");
-  const int count = utils::inumeric(FLERR, arg[0], false, lmp);
+  const bigint requested = utils::bnumeric(FLERR, arg[0], false, lmp);
   const bigint seed = utils::bnumeric(FLERR, arg[2], false, lmp);
-  if (count <= 0) error->all(FLERR, "shapes random: count {} must be positive", count);
+  const int room = nscd::ShapeLibrary::kMaxShapes - avec->shapes().size();
+  if (requested < 1 || requested > room)
+    error->all(FLERR, "shapes random: count {} must be between 1 and {} (a library holds at most "
+               "{} shapes, {} are loaded); reuse shapes for many grains with 'shapes assign ... "
+               "shape random'", requested, room, nscd::ShapeLibrary::kMaxShapes, avec->shapes().size());
+  const int count = (int) requested;
   nscd::RandomGrainParams params;
   for (int iarg = 3; iarg < narg;) {
     const std::string key = arg[iarg];
@@ -116,8 +129,13 @@ void Shapes::random(int narg, char **arg)
     };
     if (key == "vertices") {
       need(2);
-      params.min_vertices = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      params.max_vertices = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
+      const bigint lo = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+      const bigint hi = utils::bnumeric(FLERR, arg[iarg + 2], false, lmp);
+      if (lo < 4 || hi < lo || hi > 10000)
+        error->all(FLERR, "shapes random: vertices {} {} must satisfy 4 <= NMIN <= NMAX <= 10000",
+                   lo, hi);
+      params.min_vertices = (int) lo;
+      params.max_vertices = (int) hi;
       iarg += 3;
     } else if (key == "size") {
       need(2);
@@ -155,6 +173,9 @@ void Shapes::random(int narg, char **arg)
 void Shapes::write(int narg, char **arg)
 {
   if (narg != 1) error->all(FLERR, "Illegal shapes write command: expected 'shapes write FILE'");
+  if (avec->shapes().empty())
+    error->all(FLERR, "shapes write: the shape library is empty; load shapes first with "
+               "'shapes read' or 'shapes random'");
   if (comm->me != 0) return;
   std::ofstream out(arg[0]);
   if (!out) error->one(FLERR, "shapes write: cannot open file {} for writing", arg[0]);
@@ -176,6 +197,24 @@ void Shapes::info(int narg, char ** /*arg*/)
                         s.faces.size(), s.radius, s.volume, s.bounding_radius, lib.name(id));
   }
   utils::logmesg(lmp, text);
+}
+
+/* Every shape id in lo..hi must give finite, normal mass and moments with the given density
+   or mass (density 1e400 is inf, 1e-320 denormal): checked on all ranks before any atom
+   changes, with the value named. */
+void Shapes::check_mass_properties(int lo, int hi, double density, double mass)
+{
+  if (!(density > 0.0) && !(mass > 0.0)) return;
+  for (int id = lo; id <= hi; id++) {
+    try {
+      const nscd::Spheropolyhedron &shape = avec->shapes().shape(id);
+      if (density > 0.0) nscd::grain_inertia_from_density(shape, density);
+      else nscd::grain_inertia_from_mass(shape, mass);
+    } catch (std::exception &e) {
+      error->all(FLERR, "shapes assign: shape {} with {} {}: {}", id,
+                 density > 0.0 ? "density" : "mass", density > 0.0 ? density : mass, e.what());
+    }
+  }
 }
 
 /* shapes assign GROUP [shape I | shape random IMIN IMAX SEED] [density RHO | mass M]
@@ -208,6 +247,9 @@ void Shapes::assign(int narg, char **arg)
       shape_lo = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
       shape_hi = utils::inumeric(FLERR, arg[iarg + 3], false, lmp);
       shape_seed = utils::bnumeric(FLERR, arg[iarg + 4], false, lmp);
+      if (shape_lo > shape_hi)
+        error->all(FLERR, "shapes assign: shape random {} {}: IMIN must not exceed IMAX",
+                   shape_lo, shape_hi);
       iarg += 5;
     } else if (key == "shape") {
       need(1);
@@ -250,6 +292,8 @@ void Shapes::assign(int narg, char **arg)
                "shapes first with 'shapes read' or 'shapes random')", shape_lo, shape_hi, nshapes);
   if (density > 0.0 && mass > 0.0)
     error->all(FLERR, "shapes assign: give density or mass, not both");
+  check_mass_properties(shape_mode == KEEP ? 1 : std::max(shape_lo, 1),
+                        shape_mode == KEEP ? nshapes : shape_hi, density, mass);
 
   int *mask = atom->mask;
   tagint *tag = atom->tag;

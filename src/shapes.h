@@ -31,6 +31,7 @@ class Shapes : public Command {
   void write(int, char **);
   void info(int, char **);
   void assign(int, char **);
+  void check_mass_properties(int lo, int hi, double density, double mass);
   void broadcast(std::string &text);    // from rank 0 to all
 };
 

@@ -11,9 +11,10 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${BUILD_DIR:-$here/build}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
-packages=(g++ cmake make dpkg-dev xz-utils ca-certificates libopenmpi-dev openmpi-bin
+packages=(g++ cmake make xz-utils ca-certificates libopenmpi-dev openmpi-bin
           libeigen3-dev libqhull-dev libgtest-dev libbenchmark-dev ccache
-          python3-numpy python3-matplotlib)
+          libfftw3-dev python3-numpy python3-scipy python3-matplotlib
+          paraview python3-paraview xvfb xauth)    # ParaView renders (doc/analysis.md): ~1 min, ~150 packages
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

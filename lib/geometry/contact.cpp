@@ -211,7 +211,7 @@ void write_contact_set(const ContactWorkspace &workspace, const Vec3 &normal,
   out.count = count;
   for (int k = 0; k < count; ++k) {
     const Candidate &c = pts[chosen[k]];
-    out.points[k] = {c.position + origin, normal, c.gap, c.key};
+    out.points[k] = {c.position + origin, c.normal, c.gap, c.key};
   }
 }
 
@@ -316,7 +316,7 @@ ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
   const Core a = place_core(shape_i, pose_i, origin, ws.vertices_i, ws.normals_i, ws.offsets_i);
   const Core b = place_core(shape_j, pose_j, origin, ws.vertices_j, ws.normals_j, ws.offsets_j);
   const double merge = merge_distance_for(shape_i.bounding_radius, shape_j.bounding_radius);
-  const ManifoldInput in{activation, std::max(shape_i.bounding_radius, shape_j.bounding_radius), merge};
+  const ManifoldInput in{activation, std::max(shape_i.bounding_radius, shape_j.bounding_radius), merge, true};
   const Vec3 normal = build_manifold(a, b, in, ws);
   write_contact_set(ws, normal, origin, in.length_scale, out);
   return out;

@@ -126,6 +126,7 @@ class ContactWorkspace {
     Vec3 core_point_i;                // the point's foot on core i
     double gap;
     std::uint64_t key;
+    Vec3 normal = Vec3::Zero();       // unit, from body j to body i
   };
 
   // An edge on the Gauss sphere: the arc between the normals of its two faces (negated

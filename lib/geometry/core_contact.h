@@ -67,6 +67,9 @@ struct ManifoldInput {
   double activation;       // keep points with gap <= activation
   double length_scale;     // larger bounding radius of the pair
   double merge_distance;   // points closer than this are merged
+  // Also every vertex of either core over a face of the other within the activation
+  // distance (grain pairs: the points a turning grain brings into contact in a step).
+  bool vertices_over_faces = false;
 };
 Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &input,
                     ContactWorkspace &workspace);

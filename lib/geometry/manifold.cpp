@@ -250,6 +250,68 @@ bool add_face_contact(const ReferenceFace &ref, const Core &inc, int inc_support
   return true;
 }
 
+// ---- speculative points: vertices over faces ---------------------------------------------
+
+// The face of `ref` that point p lies highest above (largest signed distance from its
+// plane), and that height.
+int highest_face(const Core &ref, const Vec3 &p, double &height)
+{
+  int best = 0;
+  height = -std::numeric_limits<double>::infinity();
+  for (int f = 0; f < ref.face_count(); ++f) {
+    const double h = ref.normals[f].dot(p) - ref.offsets[f];
+    if (h > height) {
+      height = h;
+      best = f;
+    }
+  }
+  return best;
+}
+
+// Whether p projects onto face f of `ref` inside the face (its side planes, within tol).
+bool over_face(const Core &ref, int f, const Vec3 &p, double tol)
+{
+  const auto &loop = ref.shape->faces[f].vertices;
+  const int m = static_cast<int>(loop.size());
+  for (int k = 0; k < m; ++k) {
+    const Vec3 &r0 = ref.vertices[loop[k]], &r1 = ref.vertices[loop[(k + 1) % m]];
+    const Vec3 outward = (r1 - r0).cross(ref.normals[f]);    // counter-clockwise loop
+    if (outward.dot(p - r0) > tol * outward.norm()) return false;
+  }
+  return true;
+}
+
+// Every vertex of `inc` over a face of `ref` and within the activation distance of it, as a
+// point with that face's normal. The closest features give one point where two grains meet
+// edge-first or corner-first; a grain turning about it brings its other vertices down onto
+// the neighbour within the step, and the solver must already hold those points then (else
+// they sink in unseen, by |w| R dt per step). A vertex beside a face (over an edge's or a
+// vertex's region) is not taken: its plane distance would understate its true one.
+void add_vertices_over_faces(const Core &ref, const Core &inc, bool ref_is_a, const ManifoldInput &in,
+                             ContactWorkspace &ws)
+{
+  if (!ref.is_polytope()) return;
+  const double tol = Tolerance::kClip * in.length_scale;
+  const double reach = in.activation + ref.radius + inc.radius;
+  for (int k = 0; k < inc.count; ++k) {
+    const Vec3 &v = inc.vertices[k];
+    if ((v - ref.centroid).squaredNorm() > (ref.extent + reach) * (ref.extent + reach)) continue;
+    double height;
+    const int f = highest_face(ref, v, height);
+    const double gap = height - ref.radius - inc.radius;
+    if (!(gap <= in.activation) || !over_face(ref, f, v, tol)) continue;
+    const std::uint64_t key = ref_is_a ? make_key(face_feature(f), vertex_feature(k))
+                                       : make_key(vertex_feature(k), face_feature(f));
+    // the closest features may already be this vertex on this face: one point per key
+    if (std::any_of(ws.candidates.begin(), ws.candidates.end(), [&](const Candidate &c) { return c.key == key; }))
+      continue;
+    const Vec3 &n = ref.normals[f];    // outward from ref
+    const Vec3 position = v + 0.5 * (ref.radius - inc.radius - height) * n;
+    const Vec3 on_ref = v - height * n;
+    ws.candidates.push_back({position, ref_is_a ? on_ref : v, gap, key, ref_is_a ? Vec3(-n) : n});
+  }
+}
+
 // ---- choice of the axis and of the features -------------------------------------------
 
 // Unit axis from core a to core b at the closest approach, or false when the cores are
@@ -329,6 +391,7 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, Conta
   ws.candidates.clear();
   if (a.count <= 2 && b.count <= 2) {
     const Vec3 normal = segment_pair_manifold(a, b, in, ws);
+    for (Candidate &c : ws.candidates) c.normal = normal;
     merge_close_points(in.merge_distance, ws.candidates);
     return normal;
   }
@@ -352,6 +415,13 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, Conta
   }
   if (!done) {
     add_feature_pair(a, feature_facing(a, va, axis), b, feature_facing(b, vb, -axis), axis, in, ws);
+  }
+  for (Candidate &c : ws.candidates) c.normal = normal;
+  // A patch (three or more points) already holds the grain against turning onto the
+  // neighbour; the speculative points are for pairs meeting edge- or corner-first.
+  if (in.vertices_over_faces && ws.candidates.size() < 3) {
+    add_vertices_over_faces(a, b, true, in, ws);
+    add_vertices_over_faces(b, a, false, in, ws);
   }
   merge_close_points(in.merge_distance, ws.candidates);
   return normal;

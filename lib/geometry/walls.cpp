@@ -105,7 +105,7 @@ ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,
     const Vec3 &v = ws.vertices_i[k];
     const Touch t = touch_plane(v, centre_height + normal.dot(v), shape.radius, normal);
     if (!(t.gap <= activation)) continue;
-    ws.candidates.push_back({t.position, v, t.gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
+    ws.candidates.push_back({t.position, v, t.gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature()), normal});
   }
   write_contact_set(ws, normal, pose.position, shape.bounding_radius, out);
   return out;
@@ -133,7 +133,7 @@ ContactSet contact_grain_cylinder(const Spheropolyhedron &shape, const Pose &pos
     const Vec3 outward = outward_from_axis(radial, rho, axis);
     const Touch t = touch_cylinder(v, rho, outward, shape.radius, wall.radius);
     if (!(t.gap <= activation)) continue;
-    ws.candidates.push_back({t.position, v, t.gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature())});
+    ws.candidates.push_back({t.position, v, t.gap, make_key(vertex_feature(static_cast<int>(k)), wall_feature()), -outward});
     if (ws.candidates.size() == 1 || t.gap < deepest_gap) {
       deepest_gap = t.gap;
       deepest_outward = outward;

@@ -124,6 +124,34 @@ void drop_straight_vertices(std::vector<HullPolygon> &faces, const std::vector<V
   }
 }
 
+// The faces must form a closed convex surface: every face a polygon, every edge shared by
+// exactly two faces (once in each direction) and Euler's V - E + F = 2. qhull's merged
+// output on points close to flat at its precision can break this; mass properties and
+// contact code would then index missing faces.
+void check_closed_surface(const HullTopology &hull)
+{
+  auto fail = [](const std::string &why) {
+    throw ShapeError("convex hull is degenerate (" + why + "); the points are too close to flat, to a "
+                     "line or to each other for a reliable hull: spread them further apart");
+  };
+  std::vector<std::pair<int, int>> directed;
+  for (const auto &face : hull.faces) {
+    const size_t n = face.vertices.size();
+    if (n < 3) fail("a face with " + std::to_string(n) + " vertices");
+    for (size_t i = 0; i < n; ++i) directed.emplace_back(face.vertices[i], face.vertices[(i + 1) % n]);
+  }
+  std::sort(directed.begin(), directed.end());
+  if (std::adjacent_find(directed.begin(), directed.end()) != directed.end()) fail("an edge used twice");
+  for (const auto &edge : directed) {
+    if (!std::binary_search(directed.begin(), directed.end(), std::make_pair(edge.second, edge.first))) {
+      fail("an edge with one face");
+    }
+  }
+  const long euler = static_cast<long>(hull.vertices.size()) - static_cast<long>(hull.edges.size()) +
+                     static_cast<long>(hull.faces.size());
+  if (hull.faces.size() < 4 || euler != 2) fail("V - E + F = " + std::to_string(euler) + ", not 2");
+}
+
 HullTopology topology_from_faces(std::vector<HullPolygon> faces)
 {
   HullTopology hull;
@@ -173,7 +201,9 @@ HullTopology convex_hull_3d(const std::vector<Vec3> &points, double merge_distan
     faces.push_back(std::move(face));
   }
   drop_straight_vertices(faces, points, merge_distance);
-  return topology_from_faces(std::move(faces));
+  HullTopology hull = topology_from_faces(std::move(faces));
+  check_closed_surface(hull);
+  return hull;
 }
 
 }    // namespace nscd

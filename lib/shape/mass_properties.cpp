@@ -137,7 +137,13 @@ Mat3 MassMoments::inertia_about_centre() const
 {
   const Vec3 c = centre();
   const Mat3 central = second - volume * c * c.transpose();
-  return central.trace() * Mat3::Identity() - central;
+  // I = trace(C) 1 - C, with each diagonal entry summed from the other two diagonal
+  // entries of C rather than as trace - C_kk: no cancellation for a needle along an axis.
+  Mat3 inertia = -central;
+  inertia(0, 0) = central(1, 1) + central(2, 2);
+  inertia(1, 1) = central(0, 0) + central(2, 2);
+  inertia(2, 2) = central(0, 0) + central(1, 1);
+  return inertia;
 }
 
 MassMoments ball_moments(const Vec3 &centre, double radius)

@@ -14,6 +14,9 @@ constexpr double kPi = 3.14159265358979323846;
 // semi-axis it was drawn on is a sliver (likely with few points) and is drawn again.
 constexpr double kMinThicknessFraction = 0.25;
 constexpr int kMaxDraws = 1000;
+// Diameters allowed: grains then stay inside the shape size limits (1e-30 .. 1e30).
+constexpr double kMinDiameter = 1e-29;
+constexpr double kMaxDiameter = 1e29;
 
 // Mixes (seed, index) into a well-spread engine seed (SplitMix64 finaliser).
 std::uint64_t mix(std::uint64_t x)
@@ -54,7 +57,7 @@ void check(bool ok, const std::string &problem)
 std::string str(double v)
 {
   std::ostringstream out;
-  out.precision(17);
+  out.precision(10);
   out << v;
   return out.str();
 }
@@ -106,6 +109,11 @@ double scale_for_volume(const Spheropolyhedron &core, double r, double target)
   return s;
 }
 
+std::string random_grain_name(std::uint64_t seed, int k)
+{
+  return "grain_" + std::to_string(seed) + "_" + std::to_string(k);
+}
+
 }    // namespace
 
 void validate(const RandomGrainParams &p)
@@ -116,8 +124,13 @@ void validate(const RandomGrainParams &p)
   check(p.max_vertices <= 10000, "max vertices " + std::to_string(p.max_vertices) + " is above 10000; use fewer");
   check(std::isfinite(p.min_diameter) && p.min_diameter > 0,
         "min diameter " + str(p.min_diameter) + " is not a positive number; give DMIN > 0");
-  check(std::isfinite(p.max_diameter) && p.max_diameter >= p.min_diameter,
+  check(p.min_diameter >= kMinDiameter, "min diameter " + str(p.min_diameter) + " is below the supported " +
+                                            str(kMinDiameter) + "; use a smaller length unit");
+  check(!(p.max_diameter < p.min_diameter),
         "max diameter " + str(p.max_diameter) + " is below min diameter " + str(p.min_diameter) + "; give DMIN <= DMAX");
+  check(std::isfinite(p.max_diameter) && p.max_diameter <= kMaxDiameter,
+        "max diameter " + str(p.max_diameter) + " is not a number up to the supported " + str(kMaxDiameter) +
+            "; use a larger length unit");
   check(p.ratio_b > 0 && p.ratio_b <= 1, "axis ratio b/a " + str(p.ratio_b) + " is outside (0, 1]; give 0 < b/a <= 1");
   check(p.ratio_c > 0 && p.ratio_c <= 1, "axis ratio c/a " + str(p.ratio_c) + " is outside (0, 1]; give 0 < c/a <= 1");
   check(p.ratio_spread >= 0 && p.ratio_spread < 1,
@@ -151,10 +164,20 @@ int add_random_grains(ShapeLibrary &library, const RandomGrainParams &params, in
 {
   validate(params);
   check(count >= 1, "count " + std::to_string(count) + " must be at least 1");
-  ShapeLibrary grains;
-  for (int k = 0; k < count; ++k) {
-    grains.add(random_grain(params, seed, k), "grain_" + std::to_string(seed) + "_" + std::to_string(k + 1));
+  const int room = ShapeLibrary::kMaxShapes - library.size();
+  check(count <= room, "count " + std::to_string(count) + " is more than the library can take (" +
+                           std::to_string(ShapeLibrary::kMaxShapes) + " shapes at most, " +
+                           std::to_string(library.size()) + " loaded); make fewer grains and give each "
+                           "shape to many of them");
+  // Checked before the (slow) generation. Names repeat only with a seed used before.
+  for (int k = 1; k <= count; ++k) {
+    const int taken = library.find(random_grain_name(seed, k));
+    check(taken == 0, "shape name '" + random_grain_name(seed, k) + "' is already used by shape id " +
+                          std::to_string(taken) + " (seed " + std::to_string(seed) +
+                          " was used before); give another seed");
   }
+  ShapeLibrary grains;
+  for (int k = 0; k < count; ++k) grains.add(random_grain(params, seed, k), random_grain_name(seed, k + 1));
   const int first = library.size() + 1;
   library.append(grains);
   return first;

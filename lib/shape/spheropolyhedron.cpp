@@ -6,8 +6,11 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
+#include <unordered_map>
 
 namespace nscd {
 namespace {
@@ -19,21 +22,42 @@ constexpr double kRelativeTolerance = 1e-10;
 // Principal moments closer than this (relative to the largest) are treated as equal: the
 // axes in that plane are then taken from the input axes (see choose_principal_axes).
 constexpr double kDegenerateMoments = 1e-10;
+// Supported lengths (doc/shape_library_format.md, "Size limits"): |coordinate| and radius
+// at most kMaxLength, grain size at least kMinLength. Then volume (~ size^3) and inertia
+// per unit density (~ size^5) stay far inside the range of doubles, also once multiplied
+// by a density and divided into torques later.
+constexpr double kMaxLength = 1e30;
+constexpr double kMinLength = 1e-30;
+// Principal moments are resolved to ~1e-16 of the largest one; a needle whose smallest
+// moment is below kMinMomentRatio x the largest (thinner than ~kMinThickness x its
+// length) would get an axial moment that is mostly round-off, or zero.
+constexpr double kMinMomentRatio = 1e-12;
+constexpr double kMinThickness = 1e-6;
 
 std::string describe(const Vec3 &p)
 {
   std::ostringstream out;
-  out.precision(17);
+  out.precision(10);
   out << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return out.str();
+}
+
+std::string describe(double v)
+{
+  std::ostringstream out;
+  out.precision(10);
+  out << v;
   return out.str();
 }
 
 void check_input(const std::vector<Vec3> &points, double radius)
 {
   if (!std::isfinite(radius) || radius < 0.0) {
-    std::ostringstream out;
-    out << "rounding radius " << radius << " is invalid; give a finite radius >= 0";
-    throw ShapeError(out.str());
+    throw ShapeError("rounding radius " + describe(radius) + " is invalid; give a finite radius >= 0");
+  }
+  if (radius > kMaxLength) {
+    throw ShapeError("rounding radius " + describe(radius) + " is above the supported " + describe(kMaxLength) +
+                     "; use a larger length unit so that the grain is smaller in number");
   }
   if (points.empty()) throw ShapeError("no points given; give at least one point (a sphere)");
   for (size_t i = 0; i < points.size(); ++i) {
@@ -41,20 +65,66 @@ void check_input(const std::vector<Vec3> &points, double radius)
       throw ShapeError("point " + std::to_string(i + 1) + " " + describe(points[i]) +
                        " is not finite; give finite coordinates");
     }
+    if (points[i].cwiseAbs().maxCoeff() > kMaxLength) {
+      throw ShapeError("point " + std::to_string(i + 1) + " " + describe(points[i]) +
+                       " has a coordinate beyond +-" + describe(kMaxLength) +
+                       "; move the shape near the origin (its position does not matter) or use a "
+                       "larger length unit");
+    }
   }
 }
 
+// Cell of the de-duplication grid: integer coordinates of q / cell size.
+struct GridCell {
+  std::int64_t i, j, k;
+  bool operator==(const GridCell &o) const { return i == o.i && j == o.j && k == o.k; }
+};
+
+struct GridCellHash {
+  size_t operator()(const GridCell &c) const
+  {
+    const std::uint64_t h = static_cast<std::uint64_t>(c.i) * 0x9e3779b97f4a7c15ULL ^
+                            static_cast<std::uint64_t>(c.j) * 0xc2b2ae3d27d4eb4fULL ^
+                            static_cast<std::uint64_t>(c.k) * 0x165667b19e3779f9ULL;
+    return static_cast<size_t>(h ^ (h >> 29));
+  }
+};
+
 // The points with near-duplicates removed (first occurrence kept, input order kept),
-// shifted by -reference.
-std::vector<Vec3> distinct_points(const std::vector<Vec3> &points, const Vec3 &reference, double tolerance)
+// shifted by -reference and multiplied by `scale`. A point is a duplicate when it lies
+// within `tolerance` (after scaling) of a point kept before it. Kept points are hashed on
+// a grid of cells `tolerance` wide, so only the 27 cells around a point can hold one that
+// close: O(n) expected instead of comparing every pair.
+std::vector<Vec3> distinct_points(const std::vector<Vec3> &points, const Vec3 &reference, double scale,
+                                  double tolerance)
 {
+  const double cell = tolerance > 0.0 ? tolerance : 1.0;
+  std::unordered_map<GridCell, std::vector<int>, GridCellHash> grid;
+  grid.reserve(points.size());
   std::vector<Vec3> kept;
   kept.reserve(points.size());
+  auto cell_of = [&](const Vec3 &q) {
+    return GridCell{static_cast<std::int64_t>(std::floor(q.x() / cell)),
+                    static_cast<std::int64_t>(std::floor(q.y() / cell)),
+                    static_cast<std::int64_t>(std::floor(q.z() / cell))};
+  };
+  auto near_kept = [&](const Vec3 &q, const GridCell &c) {
+    for (std::int64_t di = -1; di <= 1; ++di)
+      for (std::int64_t dj = -1; dj <= 1; ++dj)
+        for (std::int64_t dk = -1; dk <= 1; ++dk) {
+          const auto it = grid.find({c.i + di, c.j + dj, c.k + dk});
+          if (it == grid.end()) continue;
+          for (int index : it->second)
+            if ((kept[index] - q).norm() <= tolerance) return true;
+        }
+    return false;
+  };
   for (const auto &p : points) {
-    const Vec3 q = p - reference;
-    const bool duplicate = std::any_of(kept.begin(), kept.end(),
-                                       [&](const Vec3 &k) { return (k - q).norm() <= tolerance; });
-    if (!duplicate) kept.push_back(q);
+    const Vec3 q = (p - reference) * scale;
+    const GridCell c = cell_of(q);
+    if (near_kept(q, c)) continue;
+    grid[c].push_back(static_cast<int>(kept.size()));
+    kept.push_back(q);
   }
   return kept;
 }
@@ -215,8 +285,9 @@ Mat3 choose_principal_axes(const Mat3 &inertia)
   return axes;
 }
 
-// Moves the shape (its vertices given relative to `reference`) into its body frame.
-void move_to_body_frame(Spheropolyhedron &shape, const Vec3 &reference)
+// Moves the shape into its body frame; input_centroid is set relative to the points'
+// reference (their centroid).
+void move_to_body_frame(Spheropolyhedron &shape)
 {
   const MassMoments moments = shape_moments(shape);
   const Vec3 centre = moments.centre();
@@ -230,11 +301,63 @@ void move_to_body_frame(Spheropolyhedron &shape, const Vec3 &reference)
   set_face_planes(shape);
   shape.volume = moments.volume;
   shape.principal_inertia = (axes.transpose() * inertia * axes).diagonal();
-  shape.input_centroid = reference + centre;
+  shape.input_centroid = centre;
   shape.input_rotation = Quat(axes).normalized();
   double farthest = 0.0;
   for (const auto &v : shape.vertices) farthest = std::max(farthest, v.norm());
   shape.bounding_radius = farthest + shape.radius;
+}
+
+// Takes a shape built in units of `unit` (a power of two, so that this is exact) back to
+// the caller's units; `reference` is the input points' centroid.
+void scale_to_input_units(Spheropolyhedron &shape, double unit, const Vec3 &reference)
+{
+  for (auto &v : shape.vertices) v *= unit;
+  for (auto &f : shape.faces) f.offset *= unit;
+  shape.radius *= unit;
+  shape.volume *= unit * unit * unit;
+  shape.principal_inertia *= unit * unit * unit * unit * unit;
+  shape.bounding_radius *= unit;
+  shape.input_centroid = reference + unit * shape.input_centroid;
+}
+
+// Within the size limits volume and moments are finite; the check keeps any inf, NaN or
+// vanishing moment (which would only show up later as garbage motion) out of the library,
+// and refuses needles whose smallest moment is round-off.
+void check_mass_properties(const Spheropolyhedron &shape)
+{
+  auto usable = [](double v) { return std::isfinite(v) && v >= DBL_MIN; };
+  const Vec3 &inertia = shape.principal_inertia;
+  if (!usable(shape.volume) || !usable(inertia[0]) || !usable(inertia[1]) || !usable(inertia[2]) ||
+      !usable(shape.bounding_radius)) {
+    throw ShapeError("the shape's volume " + describe(shape.volume) + " or principal inertia " +
+                     describe(inertia) + " is not a finite positive number; give points and a radius "
+                     "within the size limits of doc/shape_library_format.md");
+  }
+  if (inertia.minCoeff() < kMinMomentRatio * inertia.maxCoeff()) {
+    throw ShapeError("the shape is a needle: its principal moments of inertia " + describe(inertia) +
+                     " differ by more than a factor " + describe(1 / kMinMomentRatio) +
+                     ", beyond what doubles resolve; make it thicker than " + describe(kMinThickness) +
+                     " x its length");
+  }
+}
+
+// The grain size L (largest distance of a point from the points' centroid, or the
+// radius if that is larger) must lie in [kMinLength, ...]; the upper end follows from
+// the coordinate and radius limits.
+void check_grain_size(double length, size_t point_count)
+{
+  if (length == 0.0) {
+    throw ShapeError((point_count == 1 ? std::string("a single point") : "all " + std::to_string(point_count) +
+                      " points coincide; a single point") +
+                     " with radius 0 has no volume; give a radius > 0 (a sphere) or at least 4 points that "
+                     "are not coplanar");
+  }
+  if (length < kMinLength) {
+    throw ShapeError("the grain size " + describe(length) + " (largest distance of a point from the points' "
+                     "centroid, or the radius if larger) is below the supported " + describe(kMinLength) +
+                     "; use a smaller length unit so that the grain is larger in number");
+  }
 }
 
 }    // namespace
@@ -246,18 +369,21 @@ Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double r
   for (const auto &p : points) reference += p;
   reference /= static_cast<double>(points.size());
   double size = 0.0;
-  for (const auto &p : points) size = std::max(size, (p - reference).norm());
-  const double tolerance = kRelativeTolerance * std::max(size, radius);
+  for (const auto &p : points) size = std::max(size, (p - reference).stableNorm());    // no underflow at 1e-300
+  const double length = std::max(size, radius);
+  check_grain_size(length, points.size());
+  // Hull and moments are computed in units of a power of two near the grain size: scaling
+  // back is exact, and qhull and the moment sums work on numbers near 1 in any length
+  // unit (moments ~ L^5 of a 1e-70 grain would underflow otherwise).
+  const double unit = std::ldexp(1.0, std::ilogb(length));
+  const double tolerance = kRelativeTolerance * length / unit;
 
-  const std::vector<Vec3> distinct = distinct_points(points, reference, tolerance);
+  const std::vector<Vec3> distinct = distinct_points(points, reference, 1.0 / unit, tolerance);
   Spheropolyhedron shape;
-  shape.radius = radius;
+  shape.radius = radius / unit;
   switch (spanned_dimension(distinct, tolerance)) {
     case Dimension::point:
-      if (radius <= 0.0) {
-        throw ShapeError("a single point with radius 0 has no volume; give a radius > 0 (a sphere) "
-                         "or at least 4 points that are not coplanar");
-      }
+      if (radius <= 0.0) check_grain_size(0.0, points.size());
       shape.vertices = {distinct[0]};
       break;
     case Dimension::line:
@@ -265,6 +391,12 @@ Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double r
         throw ShapeError(std::to_string(distinct.size()) +
                          " collinear points with radius 0 have no volume; give a radius > 0 (a "
                          "spherocylinder) or add a point off the line");
+      }
+      if (radius < kMinThickness * size) {
+        throw ShapeError("the radius " + describe(radius) + " of these " + std::to_string(distinct.size()) +
+                         " collinear points is below " + describe(kMinThickness) + " x their size " +
+                         describe(size) + " (too thin for the axial moment of inertia to be resolved in "
+                         "doubles); give a larger radius or add a point off the line");
       }
       shape.vertices = segment_ends(distinct);
       break;
@@ -276,8 +408,51 @@ Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double r
       build_polyhedron_core(shape, distinct, tolerance);
       break;
   }
-  move_to_body_frame(shape, reference);
+  move_to_body_frame(shape);
+  scale_to_input_units(shape, unit, reference);
+  check_mass_properties(shape);
   return shape;
+}
+
+namespace {
+
+GrainInertia checked_grain_inertia(const Spheropolyhedron &shape, double mass, const std::string &given)
+{
+  auto usable = [](double v) { return std::isfinite(v) && v >= DBL_MIN && v <= DBL_MAX; };
+  GrainInertia grain;
+  grain.mass = mass;
+  grain.inertia = (mass / shape.volume) * shape.principal_inertia;
+  if (!usable(grain.mass) || !usable(grain.inertia[0]) || !usable(grain.inertia[1]) || !usable(grain.inertia[2])) {
+    throw ShapeError(given + " gives a grain of mass " + describe(grain.mass) + " and moments of inertia " +
+                     describe(grain.inertia) + ", not all finite positive numbers (shape volume " +
+                     describe(shape.volume) + "); give a value that keeps them in the range of doubles, "
+                     "or change the units");
+  }
+  return grain;
+}
+
+}    // namespace
+
+GrainInertia grain_inertia_from_density(const Spheropolyhedron &shape, double density)
+{
+  if (!std::isfinite(density) || density <= 0.0) {
+    throw ShapeError("density " + describe(density) + " is invalid; give a finite density > 0");
+  }
+  return checked_grain_inertia(shape, density * shape.volume, "density " + describe(density));
+}
+
+GrainInertia grain_inertia_from_mass(const Spheropolyhedron &shape, double mass)
+{
+  if (!std::isfinite(mass) || mass <= 0.0) throw ShapeError("mass " + describe(mass) + " is invalid; give a finite mass > 0");
+  return checked_grain_inertia(shape, mass, "mass " + describe(mass));
+}
+
+double extent(const Spheropolyhedron &shape, const Quat &orientation, const Vec3 &direction)
+{
+  const Vec3 body_direction = orientation.conjugate() * direction;    // one rotation, not one per vertex
+  double reach = -INFINITY;
+  for (const Vec3 &v : shape.vertices) reach = std::max(reach, v.dot(body_direction));
+  return reach + shape.radius;
 }
 
 }    // namespace nscd

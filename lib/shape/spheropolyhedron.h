@@ -57,4 +57,21 @@ struct Spheropolyhedron {
 // fewer than 4 non-coplanar points, 3+ points that are collinear or coplanar (flat).
 Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double radius);
 
+// How far the dilated surface of a grain turned by `orientation` reaches along the unit
+// `direction` from its centre of mass: max over core vertices of (R v).d, plus the radius
+// (the support function). The grain's top is z + extent(shape, q, +z).
+double extent(const Spheropolyhedron &shape, const Quat &orientation, const Vec3 &direction);
+
+// Mass and principal moments of inertia (body frame) of one grain of a shape.
+struct GrainInertia {
+  double mass = 0.0;
+  Vec3 inertia = Vec3::Zero();
+};
+
+// From a density (mass = density x volume) or from the grain's mass. Throws ShapeError,
+// naming the value, unless it is finite and > 0 and the mass and the three moments come
+// out as finite normal numbers (not inf, 0 or denormal, which would make garbage motion).
+GrainInertia grain_inertia_from_density(const Spheropolyhedron &shape, double density);
+GrainInertia grain_inertia_from_mass(const Spheropolyhedron &shape, double mass);
+
 }    // namespace nscd

@@ -1,6 +1,7 @@
 #include "wire/elastic_forces.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -8,16 +9,20 @@ namespace nscd::wire {
 
 namespace {
 
-double checked_length(const Vec3 &d, const char *what)
+[[noreturn]] __attribute__((noinline, cold)) void throw_bad_length(double length, const char *what)
+{
+  std::ostringstream msg;
+  msg << "wire: " << what << " has length " << length
+      << " (its two nodes coincide or are not finite); check the wire's initial "
+         "coordinates or reduce the wire time step if it blew up";
+  throw std::invalid_argument(msg.str());
+}
+
+// The check is inline and the message out of line: these kernels run every substep.
+inline double checked_length(const Vec3 &d, const char *what)
 {
   const double length = d.norm();
-  if (!(length > 0.0) || !std::isfinite(length)) {
-    std::ostringstream msg;
-    msg << "wire: " << what << " has length " << length
-        << " (its two nodes coincide or are not finite); check the wire's initial "
-           "coordinates or reduce the wire time step if it blew up";
-    throw std::invalid_argument(msg.str());
-  }
+  if (!(length > 0.0 && length < std::numeric_limits<double>::infinity())) throw_bad_length(length, what);
   return length;
 }
 
@@ -60,23 +65,34 @@ BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, co
 {
   const Vec3 u = b - a;
   const Vec3 w = c - b;
-  const double lu = checked_length(u, "the element before a bent node");
-  const double lw = checked_length(w, "the element after a bent node");
-  const Vec3 uh = u / lu;
-  const Vec3 wh = w / lw;
+  const double inv_lu = 1.0 / checked_length(u, "the element before a bent node");
+  const double inv_lw = 1.0 / checked_length(w, "the element after a bent node");
+  const Vec3 uh = u * inv_lu;
+  const Vec3 wh = w * inv_lw;
   const double cosine = uh.dot(wh);
+  const double sine = uh.cross(wh).norm();
 
   BendingForces out;
-  out.angle = std::atan2(uh.cross(wh).norm(), cosine);
+  out.angle = std::atan2(sine, cosine);
   out.energy = 0.5 * k_rot * out.angle * out.angle;
   // dnu/du = -p_u / |u| and dnu/dw = +p_w / |w| with the unit in-plane perpendiculars
-  // p_u = unit(wh - cos uh) (towards w, normal to u) and p_w = unit(uh - cos wh). Using the
-  // unit vectors rather than dividing by sin(nu) keeps |F_a| = k nu / |u| exact near 0 and
-  // near pi. At nu == 0 the force vanishes anyway; at nu == pi exactly every perpendicular
-  // is equally steep and unit_or_zero returns zero, the symmetric choice.
+  // p_u = unit(wh - cos uh) (towards w, normal to u) and p_w = unit(uh - cos wh). Both
+  // vectors are sin(nu) long, so dividing by the sine from the cross product makes them
+  // unit to round-off (1e-16 / sin relative): cheap and exact enough while sin > 1e-6.
+  // Closer to 0 or pi each is normalised by its own length, which keeps |F_a| = k nu / |u|
+  // exact; at nu == pi exactly every perpendicular is equally steep and unit_or_zero
+  // returns zero, the symmetric choice.
   const double moment = k_rot * out.angle;
-  out.on_a = -(moment / lu) * unit_or_zero(wh - cosine * uh);
-  out.on_c = (moment / lw) * unit_or_zero(uh - cosine * wh);
+  Vec3 p_u = wh - cosine * uh, p_w = uh - cosine * wh;
+  if (sine > 1e-6) {
+    p_u *= 1.0 / sine;
+    p_w *= 1.0 / sine;
+  } else {
+    p_u = unit_or_zero(p_u);
+    p_w = unit_or_zero(p_w);
+  }
+  out.on_a = -(moment * inv_lu) * p_u;
+  out.on_c = (moment * inv_lw) * p_w;
   out.on_b = -(out.on_a + out.on_c);
   return out;
 }
@@ -96,19 +112,23 @@ WireTopology open_chain_topology(int num_nodes, double rest_length)
   return topology;
 }
 
-ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
-                                 double k_rot, const std::vector<Vec3> &positions,
-                                 std::vector<Vec3> &forces)
+namespace {
+
+template <class LawOf, class StiffnessOf>
+ElasticEnergy add_elastic_forces_with(const WireTopology &topology, const LawOf &law_of,
+                                      const StiffnessOf &k_rot_of, const std::vector<Vec3> &positions,
+                                      std::vector<Vec3> &forces)
 {
   ElasticEnergy energy;
   for (const WireElement &e : topology.elements) {
-    const AxialForces f = axial_element_forces(axial, e.rest_length, positions[e.a], positions[e.b]);
+    const AxialForces f = axial_element_forces(law_of(e), e.rest_length, positions[e.a], positions[e.b]);
     forces[e.a] += f.on_a;
     forces[e.b] += f.on_b;
     energy.axial += f.energy;
   }
-  if (k_rot == 0.0) return energy;    // a string: skip the bending work entirely
   for (const WireJoint &j : topology.joints) {
+    const double k_rot = k_rot_of(j);
+    if (k_rot == 0.0) continue;    // a string: no bending work
     const BendingForces f = bending_node_forces(k_rot, positions[j.a], positions[j.b], positions[j.c]);
     forces[j.a] += f.on_a;
     forces[j.b] += f.on_b;
@@ -116,6 +136,25 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &a
     energy.bending += f.energy;
   }
   return energy;
+}
+
+}    // namespace
+
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
+                                 double k_rot, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces)
+{
+  return add_elastic_forces_with(
+      topology, [&](const WireElement &) { return axial; }, [&](const WireJoint &) { return k_rot; },
+      positions, forces);
+}
+
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces)
+{
+  return add_elastic_forces_with(
+      topology, [](const WireElement &e) { return e.law; }, [](const WireJoint &j) { return j.k_rot; },
+      positions, forces);
 }
 
 }    // namespace nscd::wire

@@ -58,9 +58,11 @@ double angle_between(const Vec3 &u, const Vec3 &w);
 struct WireElement {
   int a, b;
   double rest_length;
+  AxialLaw law{};    // used by the add_elastic_forces overload without a law
 };
 struct WireJoint {
-  int a, b, c;    // b is the node carrying the rotational spring
+  int a, b, c;         // b is the node carrying the rotational spring
+  double k_rot = 0.0;  // used by the add_elastic_forces overload without k_rot
 };
 struct WireTopology {
   std::vector<WireElement> elements;
@@ -78,9 +80,12 @@ struct ElasticEnergy {
 };
 
 // Adds the axial and bending forces of all elements and joints to forces (indexed like
-// positions; not cleared) and returns the elastic energy.
+// positions; not cleared) and returns the elastic energy: with one law and k_rot for all,
+// or with each element's law and each joint's k_rot.
 ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
                                  double k_rot, const std::vector<Vec3> &positions,
+                                 std::vector<Vec3> &forces);
+ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector<Vec3> &positions,
                                  std::vector<Vec3> &forces);
 
 }    // namespace nscd::wire

@@ -36,22 +36,6 @@ SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_subst
   return plan;
 }
 
-Pose GrainMotion::pose_at(double tau) const
-{
-  Pose pose;
-  pose.position = start.position + tau * velocity;
-  const Vec3 turn = tau * angular_velocity;
-  const double angle = turn.norm();
-  const Quat rotation = angle > 0.0 ? Quat(Eigen::AngleAxisd(angle, turn / angle)) : Quat::Identity();
-  pose.orientation = (rotation * start.orientation).normalized();
-  return pose;
-}
-
-Vec3 GrainMotion::point_velocity(const Vec3 &world_point, double tau) const
-{
-  return velocity + angular_velocity.cross(world_point - pose_at(tau).position);
-}
-
 void GrainForceAccumulator::reset(int num_grains)
 {
   force_sum_.assign(num_grains, Vec3::Zero());
@@ -100,9 +84,10 @@ void prepare_wire_nodes(WireNodeSet &nodes, double dt)
       for (Gear5State &s : nodes.state) gear5_change_step(s, nodes.dt, dt);
     nodes.dt = dt;
   }
-  nodes.positions.resize(n);
-  nodes.velocities.resize(n);
-  nodes.forces.resize(n);
+  const std::size_t slots = n + static_cast<std::size_t>(std::max(nodes.copies, 0));
+  nodes.positions.resize(slots);
+  nodes.velocities.resize(slots);
+  nodes.forces.resize(slots);
 }
 
 void predict_wire_nodes(WireNodeSet &nodes)
@@ -112,8 +97,8 @@ void predict_wire_nodes(WireNodeSet &nodes)
     if (!nodes.fixed[i]) gear5_predict(nodes.state[i]);
     nodes.positions[i] = nodes.state[i].position();
     nodes.velocities[i] = nodes.fixed[i] ? Vec3::Zero() : nodes.state[i].velocity(nodes.dt);
-    nodes.forces[i].setZero();
   }
+  for (Vec3 &f : nodes.forces) f.setZero();
 }
 
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)

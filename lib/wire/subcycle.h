@@ -1,10 +1,9 @@
 // The wire subcycle of one NSCD grain step, independent of LAMMPS.
 //
 // One NSCD step of length dt_NSCD runs n wire substeps of dt_SP = dt_NSCD / n with the
-// Gear-5 integrator. Grains are not integrated during the subcycle: each moves rigidly with
-// the velocity and angular velocity it had at the start of the NSCD step (GrainMotion), so
-// a wire wrapped round a moving grain is carried along instead of seeing the grain jump by
-// v dt_NSCD at the next grain step; zero velocities give "grains held fixed". The
+// Gear-5 integrator. Grains are not integrated during the subcycle: they hold still (the
+// papers' subcycle: the wire nodes move n times per move of the grains), and their
+// velocities enter only the contacts' relative velocity (contact_model.h). The
 // wire->grain forces and torques are summed over the n substeps and their mean handed to
 // the NSCD solver as an external force (mean force = impulse / dt_NSCD).
 //
@@ -34,18 +33,6 @@ struct SubcyclePlan {
 // Throws std::invalid_argument if the steps are not positive or if the requested n gives a
 // dt_SP above dt_sp_max (the message names the n that would do).
 SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_substeps = 0);
-
-// Rigid motion of a grain over the NSCD step at its start-of-step velocities.
-struct GrainMotion {
-  Pose start;
-  Vec3 velocity = Vec3::Zero();
-  Vec3 angular_velocity = Vec3::Zero();    // world frame
-
-  // Pose after time tau: position + tau v, orientation turned by tau * omega.
-  Pose pose_at(double tau) const;
-  // Velocity of the material point now at world_point, when the grain is at pose_at(tau).
-  Vec3 point_velocity(const Vec3 &world_point, double tau) const;
-};
 
 // Sums of wire->grain forces and torques (about each grain's centre) over the substeps.
 // No allocation after reset() unless the grain count grows.
@@ -79,8 +66,11 @@ struct WireNodeSet {
   std::vector<std::uint8_t> fixed;    // 1: position kept, velocity zero (clamps, anchors)
   double dt = 0.0;                    // step the scaled derivatives refer to
 
-  // Scratch, sized by resize(): predicted positions/velocities and the forces.
+  // Scratch, sized by prepare_wire_nodes(): predicted positions/velocities and the forces,
+  // with `copies` more slots after the nodes for copies the caller fills in each substep
+  // (e.g. ghost atoms of other MPI ranks; they are not integrated).
   std::vector<Vec3> positions, velocities, forces;
+  int copies = 0;
 
   int size() const { return static_cast<int>(state.size()); }
   // Nodes at rest at the given positions with the given mass each, none fixed.
@@ -93,7 +83,8 @@ struct SubstepInfo {
   double dt;        // dt_SP
 };
 
-// Predicts every free node and fills nodes.positions / nodes.velocities; zeroes forces.
+// Predicts every free node and fills nodes.positions / nodes.velocities; zeroes all forces
+// (copies included).
 void predict_wire_nodes(WireNodeSet &nodes);
 // Corrects every free node with a = force / mass; fixed nodes stay put at rest.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);

@@ -21,9 +21,9 @@ int main(int argc, char **argv)
     auto *lammps = new LAMMPS(argc, argv, MPI_COMM_WORLD);
     lammps->input->file();
     delete lammps;
-  } catch (LAMMPS_NS::LAMMPSAbortException &abort) {
+  } catch (LAMMPS_NS::LAMMPSAbortException &) {
     std::fflush(nullptr);    // the message is in the screen/log buffers of the failing rank
-    MPI_Abort(abort.universe, 1);
+    MPI_Abort(MPI_COMM_WORLD, 1);    // (its universe accessor differs between versions)
   } catch (LAMMPS_NS::LAMMPSException &) {
     std::fflush(nullptr);
     MPI_Barrier(MPI_COMM_WORLD);

@@ -50,10 +50,14 @@ class LammpsTest : public ::testing::Test {
     try {
       run(line);
     } catch (LAMMPS_NS::LAMMPSException &e) {
-      return e.message;
+      return e.what();
     }
     return "";
   }
+
+  // What `compute reduce` needs after its inputs to read local data (a compute's rows):
+  // LAMMPS 29 Aug 2024 and newer ask for "inputs local", older ones refuse the keyword.
+  std::string reduce_local() const { return lmp->num_ver >= 20240829 ? " inputs local" : ""; }
 
   // A number written with all its digits (std::to_string keeps only 6 decimals).
   static std::string num(double value)

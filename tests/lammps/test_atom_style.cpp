@@ -3,7 +3,9 @@
 #include "lammps_fixture.h"
 
 #include "atom_vec_spheropolyhedron.h"
+#include "compute.h"
 #include "domain.h"
+#include "modify.h"
 #include "shape/shape_library.h"
 
 #include <cmath>
@@ -296,6 +298,47 @@ TEST_F(AtomStyleTest, DumpWritesTrueShapesInWorldCoordinates)
   EXPECT_NEAR(extents[0], 1.0, 1e-7);
   EXPECT_NEAR(extents[1], 2.0, 1e-7);
   EXPECT_NEAR(extents[2], 3.0, 1e-7);
+}
+
+// Grains keep their orientation in LAMMPS' own per-atom quat: `set quat` turns a grain, and
+// (LAMMPS 29 Aug 2024 and newer) `displace_atoms rotate` turns it along with its position
+// and `compute property/atom quatw ...` reads it. A private entry named "quat" would leave
+// the core commands working on another array.
+TEST_F(AtomStyleTest, CoreOrientationCommandsActOnGrains)
+{
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+            "shapes read " + shape_file, "region box block -10 10 -10 10 -10 10",
+            "create_box 1 box", "create_atoms 1 single 1 0 0",
+            "shapes assign all shape 1 density 1", "set atom 1 quat 0 0 1 90"});
+  const double c = std::sqrt(0.5);
+  auto quat_of_atom1 = [&]() {
+    std::vector<double> q(4, 0.0), all(4, 0.0);
+    const int i = lmp->atom->map(1);
+    if (i >= 0 && i < lmp->atom->nlocal)
+      for (int k = 0; k < 4; k++) q[k] = avec()->quat[i][k];
+    MPI_Allreduce(q.data(), all.data(), 4, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  };
+  std::vector<double> q = quat_of_atom1();
+  const double turned_90[4] = {c, 0.0, 0.0, c};
+  for (int k = 0; k < 4; k++) EXPECT_NEAR(q[k], turned_90[k], 1e-12) << k;
+  if (lmp->num_ver < 20240829) GTEST_SKIP() << "displace_atoms/compute property/atom know no per-atom quat";
+
+  run("displace_atoms all rotate 0 0 0 0 0 1 90");    // another 90 degrees about z
+  q = quat_of_atom1();
+  const double turned_180[4] = {0.0, 0.0, 0.0, 1.0};
+  for (int k = 0; k < 4; k++) EXPECT_NEAR(q[k], turned_180[k], 1e-12) << k;
+  double x[3] = {0.0, 0.0, 0.0}, all_x[3];
+  const int i = lmp->atom->map(1);
+  if (i >= 0 && i < lmp->atom->nlocal)
+    for (int k = 0; k < 3; k++) x[k] = lmp->atom->x[i][k];
+  MPI_Allreduce(x, all_x, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_NEAR(all_x[0], 0.0, 1e-12);
+  EXPECT_NEAR(all_x[1], 1.0, 1e-12);
+
+  commands({"compute q all property/atom quatw quati quatj quatk", "compute qz all reduce sum c_q[4]",
+            "thermo_style custom step c_qz", "run 0"});
+  EXPECT_NEAR(lmp->modify->get_compute_by_id("qz")->compute_scalar(), 1.0, 1e-12);
 }
 
 TEST_F(AtomStyleTest, BadInputGivesErrorsThatNameTheProblem)

@@ -6,12 +6,18 @@
 #include "compute.h"
 #include "fix_nscd.h"
 #include "modify.h"
+#include "nscd_restart.h"
 #include "output.h"
 #include "thermo.h"
 
+#include "solver/contact_problem.h"
+
 #include <cmath>
+#include <cstring>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <regex>
 
 using namespace LAMMPS_NS;
 
@@ -70,9 +76,9 @@ class NSCDTest : public LammpsTest {
 
   double fix_value(const std::string &fix_id, int index)
   {
-    return lmp->modify->fix[lmp->modify->find_fix(fix_id.c_str())]->compute_vector(index);
+    return lmp->modify->get_fix_by_id(fix_id.c_str())->compute_vector(index);
   }
-  FixNSCD *solver() { return dynamic_cast<FixNSCD *>(lmp->modify->fix[lmp->modify->find_fix("solver")]); }
+  FixNSCD *solver() { return dynamic_cast<FixNSCD *>(lmp->modify->get_fix_by_id("solver")); }
 
   // Position, velocity, angular velocity of the atom with this ID (gathered to all ranks).
   std::vector<double> state_of(tagint tag)
@@ -249,7 +255,8 @@ TEST_F(NSCDTest, BadInputNamesTheProblem)
   EXPECT_NE(error_of("fix s all nscd bogus 1").find("bogus"), std::string::npos);
   EXPECT_NE(error_of("fix w all nscd/wall plane 0 0 0 0 0 0").find("no direction"), std::string::npos);
   EXPECT_NE(error_of("fix w all nscd/wall cylinder 0 0 0 0 0 1 -2").find("radius"), std::string::npos);
-  EXPECT_NE(error_of("pair_coeff * * 0.5").find("pair_style"), std::string::npos);
+  const std::string no_pair_style = error_of("pair_coeff * * 0.5");    // LAMMPS' own message
+  EXPECT_TRUE(std::regex_search(no_pair_style, std::regex("[Pp]air[_ ]style"))) << no_pair_style;
   run("pair_style nscd");
   EXPECT_NE(error_of("pair_coeff * * -0.5").find("-0.5"), std::string::npos);
   commands({"create_atoms 1 single 0 0 0", "fix s all nscd", "timestep 0.001"});
@@ -304,10 +311,10 @@ TEST_F(NSCDTest, ContactVirialReachesPressureAndStressPerAtom)
             "compute s all stress/atom NULL virial", "compute ssum all reduce sum c_s[3]",
             "thermo_style custom step c_p[3] c_ssum", "run 200"});
   const double volume = 20.0 * 20.0 * 20.0;
-  auto *p = lmp->modify->compute[lmp->modify->find_compute("p")];
+  auto *p = lmp->modify->get_compute_by_id("p");
   p->compute_vector();
   EXPECT_NEAR(p->vector[2] * volume, 8.0, 1e-7);
-  auto *ssum = lmp->modify->compute[lmp->modify->find_compute("ssum")];
+  auto *ssum = lmp->modify->get_compute_by_id("ssum");
   EXPECT_NEAR(ssum->compute_scalar(), -8.0, 1e-7);
 }
 
@@ -316,9 +323,10 @@ TEST_F(NSCDTest, ContactsComputeListsEveryPointWithItsForce)
   scene();
   add_cube(0.0, 0.0, 0.5);
   commands({"shapes assign all shape 1 density 1", "compute c all nscd/contacts active",
-            "compute fn all reduce sum c_c[9]", "compute walls all reduce max c_c[2]",
+            "compute fn all reduce sum c_c[9]" + reduce_local(),
+            "compute walls all reduce max c_c[2]" + reduce_local(),
             "thermo_style custom step c_fn c_walls", "run 100"});
-  auto *c = lmp->modify->compute[lmp->modify->find_compute("c")];
+  auto *c = lmp->modify->get_compute_by_id("c");
   c->compute_local();
   int rows = c->size_local_rows, all_rows = 0;
   MPI_Allreduce(&rows, &all_rows, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
@@ -328,7 +336,7 @@ TEST_F(NSCDTest, ContactsComputeListsEveryPointWithItsForce)
     EXPECT_NEAR(c->array_local[r][7], 1.0, 1e-12);    // normal +z
     EXPECT_GT(c->array_local[r][8], 0.0);
   }
-  auto *fn = lmp->modify->compute[lmp->modify->find_compute("fn")];
+  auto *fn = lmp->modify->get_compute_by_id("fn");
   EXPECT_NEAR(fn->compute_scalar(), 1.0, 1e-9);
 }
 
@@ -343,7 +351,7 @@ TEST_F(NSCDTest, ContactsComputeBetweenRunsNamesTheLastSolvesBoundaries)
   add_cube(4.0, 0.0, 0.5);
   commands({"shapes assign all shape 1 density 1", "compute c all nscd/contacts", "run 10",
             "group second id 2", "displace_atoms second move -4.0 0.0 1.0 units box", "run 0"});
-  auto *c = lmp->modify->compute[lmp->modify->find_compute("c")];
+  auto *c = lmp->modify->get_compute_by_id("c");
   c->compute_local();
   int rows = c->size_local_rows, all_rows = 0;
   MPI_Allreduce(&rows, &all_rows, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
@@ -433,6 +441,96 @@ TEST_F(NSCDTest, RestartCarriesTheWarmStart)
   EXPECT_GT(fix_value("cold", 0), 10 * (sweeps_straight + 2));
 }
 
+// Copies a restart file with every versioned block of our styles rewritten: `version` < 1
+// drops the header (the layout written before versions existed), else sets that version.
+// The first block is pair_style nscd's settings (LAMMPS writes force fields before fixes):
+// it has no size in front, and its layout before versions lacked the two reach values. It
+// gets `pair_version`.
+static void rewrite_restart_versions(const std::string &from, const std::string &to, int version,
+                                     int pair_version)
+{
+  std::ifstream in(from, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::int32_t header[2] = {LAMMPS_NS::nscd_restart::kMagic, 1};
+  const std::string marker(reinterpret_cast<const char *>(header), sizeof(header));
+  int blocks = 0;
+  for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
+    const bool pair = blocks++ == 0;
+    const int wanted = pair ? pair_version : version;
+    if (wanted >= 1) {
+      std::memcpy(&bytes[at + 4], &wanted, sizeof(int));
+      continue;
+    }
+    if (pair) {    // header, activation values, reach values -> activation values
+      bytes.erase(at + sizeof(header) + 2 * sizeof(double), 2 * sizeof(double));
+      bytes.erase(at, sizeof(header));
+      continue;
+    }
+    int size;
+    std::memcpy(&size, &bytes[at - sizeof(int)], sizeof(int));
+    size -= sizeof(header);
+    std::memcpy(&bytes[at - sizeof(int)], &size, sizeof(int));
+    bytes.erase(at, sizeof(header));
+  }
+  EXPECT_EQ(blocks, 5) << "pair nscd, fix nscd, two walls and the plate";
+  std::ofstream(to, std::ios::binary) << bytes;
+}
+
+// Restart blocks of fix nscd, nscd/wall and nscd/plate carry a format version; blocks without
+// one (written before versions) still read, and a newer version is refused by name.
+TEST_F(NSCDTest, RestartBlocksAreVersionedAndOldBlocksStillRead)
+{
+  const std::string solver = "fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1";
+  const std::vector<std::string> boundaries = {
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+      "fix pusher all nscd/wall plane -3.0 0 0 1 0 0 velocity 0.01 0 0",
+      "fix plate all nscd/plate 8 mass 1 gravity 1"};
+  scene(0.5, "tolerance 1e-9 max_sweeps 5000 check 1");
+  for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.5 + k);
+  commands({"shapes assign all shape 1 density 1", boundaries[1], boundaries[2], "run 300",
+            "write_restart " + scratch("new.restart"), "run 1"});
+  const double sweeps_straight = fix_value("solver", 0);
+  const double pusher_x = fix_value("pusher", 3), plate_z = fix_value("plate", 0);
+  if (rank() == 0) {
+    rewrite_restart_versions(scratch("new.restart"), scratch("old.restart"), 0, 0);
+    rewrite_restart_versions(scratch("new.restart"), scratch("future.restart"), 2, 1);
+    rewrite_restart_versions(scratch("new.restart"), scratch("future_pair.restart"), 1, 2);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+
+  restart_instance();
+  commands({"read_restart " + scratch("old.restart"), "neighbor 0.3 bin",
+            "neigh_modify every 1 delay 0 check yes", "fix g all gravity 1.0 vector 0 0 -1"});
+  commands(boundaries);
+  commands({solver, "run 1"});
+  EXPECT_LE(fix_value("solver", 0), sweeps_straight + 2);    // the warm start was read
+  EXPECT_NEAR(fix_value("pusher", 3), pusher_x, 1e-12);
+  EXPECT_NEAR(fix_value("plate", 0), plate_z, 1e-9);
+
+  restart_instance();
+  commands({"read_restart " + scratch("future.restart"), "neighbor 0.3 bin",
+            "neigh_modify every 1 delay 0 check yes"});
+  EXPECT_NE(error_of(boundaries[0]).find("format 2"), std::string::npos);
+  EXPECT_NE(error_of(boundaries[2]).find("format 2"), std::string::npos);
+  EXPECT_NE(error_of(solver).find("format 2"), std::string::npos);
+
+  restart_instance();
+  const std::string message = error_of("read_restart " + scratch("future_pair.restart"));
+  EXPECT_NE(message.find("pair_style nscd"), std::string::npos) << message;
+  EXPECT_NE(message.find("format 2"), std::string::npos) << message;
+}
+
+// Minimisers and r-RESPA would skip or garble the Moreau-Jean step: refused by name.
+TEST_F(NSCDTest, RespaAndMinimizeAreRefused)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1"});
+  EXPECT_NE(error_of("minimize 1e-4 1e-6 10 100").find("minimize"), std::string::npos);
+  run("run_style respa 2 2");
+  EXPECT_NE(error_of("run 1").find("respa"), std::string::npos);
+}
+
 TEST_F(NSCDTest, MovedWallComesBackFromRestart)
 {
   scene(0.0);
@@ -469,11 +567,11 @@ TEST_F(NSCDTest, SmallPileComesToRestOnTheFloor)
             "thermo_style custom step c_weight", "thermo_modify norm no", "run 3000",
             // the per-step floor force jitters with 1e-4 velocity noise: average it
             "fix floor_mean all ave/time 1 500 3500 f_floor[3]", "run 500"});
-  auto *w = lmp->modify->compute[lmp->modify->find_compute("weight")];
+  auto *w = lmp->modify->get_compute_by_id("weight");
   const double weight = w->compute_scalar();
   const double kinetic = fix_value("solver", 8) + fix_value("solver", 9);
   EXPECT_LT(kinetic, 1e-4 * weight);                        // at rest (started ~ weight x 3)
-  EXPECT_NEAR(lmp->modify->fix[lmp->modify->find_fix("floor_mean")]->compute_scalar(),
+  EXPECT_NEAR(lmp->modify->get_fix_by_id("floor_mean")->compute_scalar(),
               -weight, 0.005 * weight);
   EXPECT_LT(fix_value("solver", 2), 0.01);                  // overlap < 1% of a grain
   EXPECT_EQ(lmp->atom->natoms, 27);

@@ -175,12 +175,12 @@ class WireTest : public LammpsTest {
   }
   double fix_value(const std::string &id, int index)
   {
-    return lmp->modify->fix[lmp->modify->find_fix(id.c_str())]->compute_vector(index);
+    return lmp->modify->get_fix_by_id(id.c_str())->compute_vector(index);
   }
   // Rows of the local compute `id` (computed now) of all ranks, sorted.
   std::vector<std::vector<double>> local_rows(const std::string &id)
   {
-    Compute *c = lmp->modify->compute[lmp->modify->find_compute(id.c_str())];
+    Compute *c = lmp->modify->get_compute_by_id(id.c_str());
     c->compute_local();
     const int cols = c->size_local_cols;
     std::vector<double> mine;
@@ -730,10 +730,11 @@ TEST_F(CrossingWiresTest, GhostCutoffBelowTheContactReachIsANamedErrorAcrossRank
   }
 }
 
-// Contacts are looked for among bodies within the neighbour skin (0.3) of each other at the
-// start of a step. Element B falling at 600 (0.6 per step) from 0.4 above A passes through
-// it unseen; fix wire counts such steps (output 13) and warns once, naming a skin that
-// would see the contact. A slow run counts none.
+// Only atoms within the ghost cutoff (neighbour skin 0.3 beyond the reach of a contact) are
+// there to be found. Element B falling at 600 (0.6 per step) from 0.4 above A closes by
+// more than the skin in a step (and passes through A between two substeps); fix wire
+// counts such steps (output 13) and warns once, naming a skin that would cover the
+// motion. A slow run counts none.
 TEST_F(CrossingWiresTest, MotionBeyondTheSkinWithinAStepIsCountedAndWarned)
 {
   crossing();
@@ -745,7 +746,8 @@ TEST_F(CrossingWiresTest, MotionBeyondTheSkinWithinAStepIsCountedAndWarned)
     std::ifstream in(log);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("fix wire: at step 1 a wire node moved 0.59"), std::string::npos) << text;
-    EXPECT_NE(text.find("the neighbour skin 0.3: contacts can be missed"), std::string::npos) << text;
+    EXPECT_NE(text.find("the neighbour skin 0.3: contacts with atoms beyond the ghost cutoff can be missed"),
+              std::string::npos) << text;
     EXPECT_NE(text.find("larger skin ('neighbor 2.3"), std::string::npos) << text;    // 2 x (0.6 + 0.6)
     EXPECT_EQ(text.find("at step 2"), std::string::npos) << "warned twice";
   }

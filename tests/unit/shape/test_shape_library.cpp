@@ -168,7 +168,8 @@ TEST(ShapeLibrary, WriteThenReadGivesTheSameShapes)
 TEST(ShapeLibrary, SerialisationIsExact)
 {
   auto library = mixed_library();
-  library.add(make_spheropolyhedron({Vec3(1, 1, 1)}, 0.3), "name with spaces,commas#and\nnewline");
+  // Commas (the serialisation's separator) and bytes above 127 (UTF-8) in a name.
+  library.add(make_spheropolyhedron({Vec3(1, 1, 1)}, 0.3), "commas,in,a;n\xc3\xa4me");
   const std::string text = library.serialize();
   for (char c : text) EXPECT_TRUE(c > ' ' && c < 127) << "character " << int(c);
   const auto again = ShapeLibrary::deserialize(text);
@@ -196,14 +197,16 @@ TEST(ShapeLibrary, DamagedSerialisationIsRejected)
   rejects(text.substr(0, text.size() / 2), "ends too early");
   rejects("other-format," + text, "does not start with");
   rejects(text + "0,", "text after the last shape");
-  rejects("nscd-shapes-1,1,,0000000000000000,1,00000000000000zz,", "not a hexadecimal number");
+  // The counts of the next two must fit the text's length (else "ends too early"): padded.
+  const std::string padding(300, '0');
+  rejects("nscd-shapes-1,1,,0000000000000000,1,00000000000000zz," + padding, "not a 16-digit hexadecimal number");
   // A face that refers to vertex 5 of a 4-vertex shape.
   rejects("nscd-shapes-1,1,,0000000000000000,4,"
           "0000000000000000,0000000000000000,0000000000000000,"
           "0000000000000000,0000000000000000,0000000000000000,"
           "0000000000000000,0000000000000000,0000000000000000,"
           "0000000000000000,0000000000000000,0000000000000000,"
-          "1,3,0,1,5,",
+          "1,3,0,1,5," + padding,
           "out of range");
 }
 

@@ -460,3 +460,23 @@ TEST(Spheropolyhedron, BadInputIsRejectedWithAClearMessage)
     EXPECT_NE(m.find("add a point off"), std::string::npos) << m;
   }
 }
+
+// extent(): how far the dilated surface reaches along a direction, for turned grains.
+TEST(Spheropolyhedron, ExtentAlongADirectionFollowsTheTurnedGrain)
+{
+  const double r = 0.1;
+  const auto cube = make_spheropolyhedron(box_corners(1, 1, 1, Vec3(0, 0, 0)), r);
+  const Quat none = Quat::Identity();
+  EXPECT_NEAR(extent(cube, none, Vec3::UnitZ()), 0.5 + r, 1e-14);
+  EXPECT_NEAR(extent(cube, none, -Vec3::UnitX()), 0.5 + r, 1e-14);
+  // turned 45 degrees about x: an edge on top, sqrt(2)/2 above the centre
+  const Quat about_x(Eigen::AngleAxisd(M_PI / 4, Vec3::UnitX()));
+  EXPECT_NEAR(extent(cube, about_x, Vec3::UnitZ()), std::sqrt(0.5) + r, 1e-14);
+  // along the space diagonal of the unturned cube: a corner, sqrt(3)/2 away
+  EXPECT_NEAR(extent(cube, none, Vec3(1, 1, 1).normalized()), std::sqrt(0.75) + r, 1e-14);
+  // a corner on top: turn the diagonal (1,1,1) onto +z
+  const Quat corner_up = Quat::FromTwoVectors(Vec3(1, 1, 1).normalized(), Vec3::UnitZ());
+  EXPECT_NEAR(extent(cube, corner_up, Vec3::UnitZ()), std::sqrt(0.75) + r, 1e-13);
+  const auto ball = make_spheropolyhedron({Vec3(4, 5, 6)}, 0.3);
+  EXPECT_NEAR(extent(ball, corner_up, Vec3(0.6, 0, 0.8)), 0.3, 1e-15);
+}

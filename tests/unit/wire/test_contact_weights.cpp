@@ -1,10 +1,12 @@
-// Weights of the points a wire element finds (lib/wire/contact_weights.h), alone and with
-// the real contact geometry: the summed push of all points of a chain must not jump as a
-// grain slides along the wire past a node or as elements slide onto a face.
+// Weights of the points a wire element finds (lib/wire/contact_weights.h), alone and in the
+// contact model (lib/wire/contact_model.h) with the real geometry: the force of all points
+// of a chain on a grain must not jump as the grain slides along the wire past a node or
+// as elements slide onto a face.
+#include "wire/contact_model.h"
 #include "wire/contact_weights.h"
 
 #include "../geometry/shapes_for_tests.h"
-#include "geometry/contact.h"
+#include "contact_model_util.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +16,9 @@
 namespace nscd::wire {
 namespace {
 
-using test::make_box;
-using test::make_sphere;
-using test::place;
+using nscd::test::make_box;
+using nscd::test::make_sphere;
+using nscd::test::place;
 
 TEST(StretchEndWeight, RampsFromHalfToOneOverTheRampLength)
 {
@@ -27,21 +29,32 @@ TEST(StretchEndWeight, RampsFromHalfToOneOverTheRampLength)
   EXPECT_EQ(stretch_end_weight(1.0, 0.0), 1.0);    // no ramp: every point whole
 }
 
-// The summed weighted overlap of a body with a chain of elements (nodes in order), as fix
-// wire weights the points: each element its own contact, the ends of a stretch ramped.
-double pushed(const std::vector<Vec3> &nodes, double r_w, const Spheropolyhedron &shape, const Pose &pose)
-{
-  ContactWorkspace ws;
-  double sum = 0.0;
-  for (size_t e = 0; e + 1 < nodes.size(); ++e) {
-    const SegmentGrainContact c = contact_segment_grain({nodes[e], nodes[e + 1], r_w}, shape, pose, r_w, ws);
-    const double length = (nodes[e + 1] - nodes[e]).norm();
-    const double weight = c.count == 2 ? stretch_end_weight((c[1].s_i - c[0].s_i) * length, r_w) : 1.0;
-    for (const SegmentContact &p : c)
-      if (p.gap < 0.0) sum += weight * -p.gap;
+// The push of a chain (nodes in order, at rest) on a grain, divided by k_n: the weighted
+// sum of the overlaps of all points, from the normal forces of the contact model of a
+// frictionless, undamped wire with k_n = 1. One model follows the grain through a sweep (lists, skipping and tracking
+// in use), as in a run.
+class Pusher {
+ public:
+  Pusher(const std::vector<Vec3> &nodes, double r_w, const Spheropolyhedron &shape)
+      : nodes_(nodes), shape_(shape), model_(test::frictionless(1.0), r_w, 0.1)
+  {
+    model_.set_elements(test::chain_elements(static_cast<int>(nodes.size())));
   }
-  return sum;
-}
+  double push(const Pose &pose)
+  {
+    model_.begin_step(test::chain_scene(nodes_, {{1000, &shape_, pose}}), 1e-3, false);
+    GrainForceAccumulator reactions;
+    reactions.reset(1);
+    std::vector<Vec3> f(nodes_.size(), Vec3::Zero());
+    return model_.add_forces(nodes_, std::vector<Vec3>(nodes_.size(), Vec3::Zero()), 0.0, 1e-5, f, reactions)
+        .normal_force;
+  }
+
+ private:
+  std::vector<Vec3> nodes_;
+  const Spheropolyhedron &shape_;
+  ContactModel model_;
+};
 
 // Largest change of push(u) between neighbouring u in [from, to] (step du), and its range.
 struct Sweep {
@@ -69,8 +82,8 @@ TEST(ContactWeights, BallSlidingAlongAStraightWirePastANodeIsPushedContinuously)
 {
   const double r_w = 0.02, R = 0.2, d = 1e-3;
   const Spheropolyhedron ball = make_sphere(R);
-  const std::vector<Vec3> wire = {Vec3(-1, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0)};
-  auto push = [&](double x) { return pushed(wire, r_w, ball, place(ball, Vec3(x, 0, R + r_w - d))); };
+  Pusher pusher({Vec3(-1, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0)}, r_w, ball);
+  auto push = [&](double x) { return pusher.push(place(ball, Vec3(x, 0, R + r_w - d))); };
   const Sweep s = sweep(push, -0.3, 0.3, 1e-5);
   EXPECT_LT(s.biggest_step, 1e-2 * d);    // smooth: slope ~95 d, 1e-3 d per step; a jump is ~d
   EXPECT_NEAR(s.lowest, d, 1e-12);
@@ -86,8 +99,9 @@ TEST(ContactWeights, BallSlidingOverABentWireIsPushedContinuously)
   const Spheropolyhedron ball = make_sphere(R);
   const std::vector<Vec3> wire = {Vec3(-1, 0, 0), Vec3(0, 0, 0), Vec3(std::cos(bend), 0, -std::sin(bend))};
   for (double side : {1.0, -1.0}) {    // outer (above), inner (below)
+    Pusher pusher(wire, r_w, ball);
     auto push = [&](double x) {
-      return pushed(wire, r_w, ball, place(ball, Vec3(x, 0, side * (R + r_w - d))));
+      return pusher.push(place(ball, Vec3(x, 0, side * (R + r_w - d))));
     };
     const Sweep s = sweep(push, -0.4, 0.4, 1e-5);
     EXPECT_LT(s.biggest_step, 5e-2 * d) << "side " << side;    // slope up to ~650 d (inner side); a jump is ~d
@@ -103,12 +117,13 @@ TEST(ContactWeights, ElementsSlidingOntoAFaceArePushedContinuously)
 {
   const double r_w = 0.05, d = 1e-3, r = 0.1;
   const Spheropolyhedron box = make_box(1, 1, 1, r);
+  const Pose at_origin = place(box, Vec3::Zero());
   const double z = 1 + r + r_w - d;
   for (int elements : {1, 3}) {
     auto push = [&](double e) {    // the chain's near end lies e inside the face's edge
       std::vector<Vec3> nodes;
       for (int k = 0; k <= elements; ++k) nodes.emplace_back(1 - e + 0.5 * k, 0, z);
-      return pushed(nodes, r_w, box, place(box, Vec3::Zero()));
+      return Pusher(nodes, r_w, box).push(at_origin);
     };
     Sweep s = sweep(push, -1e-3, 0.1, 1e-5);
     for (double e : {1e-8, 5e-7, 2e-6, 1e-5})
@@ -116,7 +131,7 @@ TEST(ContactWeights, ElementsSlidingOntoAFaceArePushedContinuously)
     EXPECT_LT(s.biggest_step, 1e-2 * d) << elements << " elements";    // slope d / r_w: 2e-4 d per step
   }
   // one element fully on: both ends, each at depth d
-  EXPECT_NEAR(pushed({Vec3(0, 0, z), Vec3(0.5, 0, z)}, r_w, box, place(box, Vec3::Zero())), 2 * d, 1e-12);
+  EXPECT_NEAR(Pusher({Vec3(0, 0, z), Vec3(0.5, 0, z)}, r_w, box).push(at_origin), 2 * d, 1e-12);
 }
 
 }    // namespace

@@ -1,0 +1,58 @@
+#include "wire/wire_step.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace nscd::wire {
+
+namespace {
+double seconds()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}    // namespace
+
+ElasticEnergy WireStep::elastic_forces_now()
+{
+  std::fill(nodes.forces.begin(), nodes.forces.end(), Vec3::Zero());
+  return add_elastic_forces(topology, nodes.positions, nodes.forces);
+}
+
+StepTotals WireStep::run(const SubcyclePlan &plan, const std::array<double, 6> &corrector, Exchange &exchange,
+                         StepTiming &timing)
+{
+  StepTotals totals;
+  double in_forces = 0.0;
+  const double start = seconds();
+  run_subcycle(plan, corrector, nodes, reactions,
+               [&](const SubstepInfo &info, const std::vector<Vec3> &x, const std::vector<Vec3> &v,
+                   std::vector<Vec3> &f, GrainForceAccumulator &) {
+                 const double t0 = seconds();
+                 exchange.share_copies(nodes);
+                 const double t1 = seconds();
+                 totals.elastic = add_elastic_forces(topology, x, f);
+                 const double t2 = seconds();
+                 if (contacts) totals.contacts = contacts->add_forces(x, v, info.time, info.dt, f, reactions);
+                 const double t3 = seconds();
+                 exchange.return_copy_forces(nodes);
+                 for (int k = 0; k < nodes.size(); ++k) f[k] += external[k] - damping * v[k];
+                 const double t4 = seconds();
+                 timing.exchange += (t1 - t0) + (t4 - t3);
+                 timing.elastic += t2 - t1;
+                 timing.contacts += t3 - t2;
+                 in_forces += t4 - t0;
+               });
+  timing.integration += seconds() - start - in_forces;
+  timing.node_substeps += static_cast<double>(nodes.size()) * plan.substeps;
+  return totals;
+}
+
+double WireStep::largest_displacement(const std::vector<Vec3> &start) const
+{
+  double largest = 0.0;
+  for (int k = 0; k < nodes.size(); ++k)
+    if (!nodes.fixed[k]) largest = std::max(largest, (nodes.state[k].position() - start[k]).norm());
+  return largest;
+}
+
+}    // namespace nscd::wire

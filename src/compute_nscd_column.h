@@ -1,0 +1,39 @@
+/* compute nscd/column: measures of a granular column around a vertical axis: its height
+   from the true grain surfaces and the fraction of grains it retains. See
+   doc/compute_nscd_column.md. */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(nscd/column,ComputeNSCDColumn);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_NSCD_COLUMN_H
+#define LMP_COMPUTE_NSCD_COLUMN_H
+
+#include "compute.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class ComputeNSCDColumn : public Compute {
+ public:
+  ComputeNSCDColumn(class LAMMPS *, int, char **);
+  ~ComputeNSCDColumn() override;
+  void init() override;
+  void compute_vector() override;
+
+ private:
+  double axis_x = 0.0, axis_y = 0.0, radius = 0.0;    // the column: within radius of the axis
+  double floor_z = -1e300;                             // retained: centre above this
+  double percentile = 100.0;                           // height: this percentile of the grains' tops
+  class AtomVecSpheropolyhedron *avec = nullptr;
+
+  double height_of(const std::vector<double> &my_tops);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,514 @@
+/* create_wire: parses the command, lays the path out with lib/wire/wire_path, checks it
+   against the box, the grains and the walls, then creates the nodes on the ranks that own
+   their positions and the bonds and angles on the nodes that store them. */
+
+#include "create_wire.h"
+
+#include "angle.h"
+#include "atom.h"
+#include "atom_vec.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "bond_wire.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "force.h"
+#include "modify.h"
+#include "nscd_arrays.h"
+#include "nscd_boundary.h"
+#include "nscd_boundary_fix.h"
+#include "special.h"
+
+#include "geometry/contact.h"
+#include "geometry/point_grid.h"
+#include "shape/shape_library.h"
+#include "wire/wire_path.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+using namespace LAMMPS_NS;
+
+namespace {
+constexpr double kDegree = M_PI / 180.0;
+constexpr double kLengthTolerance = 1e-6;    // elements this close to the rest length are unstrained
+}    // namespace
+
+struct CreateWire::Request {
+  enum class Shape { loop, polyline } shape = Shape::loop;
+  std::string shape_name;
+  nscd::wire::LoopPath loop;
+  nscd::wire::PolylinePath polyline;
+  int node_type = 0, bond_type = 0, angle_type = 0;
+  int nodes = 0;                    // 0: as many as the rest length gives
+  double mass = -1.0;
+  tagint molecule = -1;             // -1: the next free molecule ID
+  double radius = -1.0;             // -1: fix wire's
+  double overlap = 0.1;             // allowed overlap with grains and walls, times the radius
+  bool check_overlap = true;
+  bool strained = false;            // elements may differ from the rest length
+  double rest_length = 0.0;         // of the bond type
+
+  nscd::wire::WireLayout layout;    // unwrapped node positions and topology
+  std::vector<nscd::Vec3> in_box;   // the nodes remapped into a periodic box
+  std::vector<imageint> images;
+  tagint first_tag = 0;
+};
+
+void CreateWire::broadcast(std::string &text)
+{
+  bigint size = (bigint) text.size();
+  MPI_Bcast(&size, 1, MPI_LMP_BIGINT, 0, world);
+  if (size > INT_MAX) error->all(FLERR, "create_wire: the polyline file is too large ({} bytes)", size);
+  text.resize((size_t) size);
+  MPI_Bcast(&text[0], (int) size, MPI_CHAR, 0, world);
+}
+
+CreateWire::CreateWire(LAMMPS *lmp) : Command(lmp), request(std::make_unique<Request>()) {}
+
+CreateWire::~CreateWire() = default;
+
+/* create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 Z1 X2 Y2 Z2 | polyline FILE
+               bond BTYPE mass M [angle ATYPE] [turns N] [pitch P] [gap DEG] [start DEG]
+               [axis AX AY AZ] [nodes N] [mol ID] [radius RW] [overlap TOL|ignore] [strained yes|no] */
+void CreateWire::command(int narg, char **arg)
+{
+  if (domain->box_exist == 0) error->all(FLERR, "create_wire: define the box first (create_box or read_data)");
+  if (atom->molecular != Atom::MOLECULAR || !atom->avec->bonds_allow)
+    error->all(FLERR, "create_wire needs an atom style with bonds, angles and molecule IDs, e.g. "
+               "'atom_style hybrid spheropolyhedron angle'");
+  AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  parse(narg, arg);
+  check_types();
+  lay_out();
+  check_nodes_in_box();
+  if (request->check_overlap) check_overlaps();
+  create_nodes();
+  create_bonds_and_angles();
+  Special special(lmp);
+  special.build();
+
+  const Request &r = *request;
+  const size_t n = r.layout.nodes.size();
+  std::string end = r.layout.closed ? "closed ring" : "open";
+  if (r.shape == Request::Shape::loop && !r.layout.closed) {
+    // equal chords on a loop or helix are equal angles: the gap left open is a little wider
+    nscd::Vec3 e1, e2;
+    nscd::wire::loop_frame(r.loop.axis, e1, e2);
+    auto angle_of = [&](const nscd::Vec3 &x) {
+      const nscd::Vec3 d = x - r.loop.centre;
+      return std::atan2(d.dot(e2), d.dot(e1));
+    };
+    const double step = std::remainder(angle_of(r.layout.nodes[1]) - angle_of(r.layout.nodes[0]), 2.0 * M_PI);
+    const double open = 2.0 * M_PI * r.loop.turns - (double) (n - 1) * std::abs(step);
+    end = fmt::format("open, ends {:.4g} degrees apart", open / kDegree);
+  } else if (!r.layout.closed) {
+    end = fmt::format("open, last node {:.4g} before the path's end",
+                      (r.layout.nodes.back() - r.polyline.points.back()).norm());
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, "create_wire: {} ({}): {} nodes (IDs {}..{}, molecule {}), {} elements of "
+                   "length {:.10g}, {} joints\n", r.shape_name, end, n, r.first_tag,
+                   r.first_tag + (tagint) n - 1, r.molecule, r.layout.topology.elements.size(),
+                   r.layout.chord, r.angle_type ? r.layout.topology.joints.size() : 0);
+}
+
+void CreateWire::parse(int narg, char **arg)
+{
+  Request &r = *request;
+  const char *usage = "expected 'create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 "
+                      "Z1 X2 Y2 Z2 | polyline FILE, then bond BTYPE mass M [angle ATYPE] ...'";
+  if (narg < 3) error->all(FLERR, "Illegal create_wire command: {}", usage);
+  r.node_type = utils::inumeric(FLERR, arg[0], false, lmp);
+  if (r.node_type < 1 || r.node_type > atom->ntypes)
+    error->all(FLERR, "create_wire: atom type {} is not between 1 and {}", r.node_type, atom->ntypes);
+  r.shape_name = arg[1];
+  auto number = [&](int i) { return utils::numeric(FLERR, arg[i], false, lmp); };
+  auto point = [&](int i) { return nscd::Vec3(number(i), number(i + 1), number(i + 2)); };
+  int iarg;
+  if (r.shape_name == "loop" || r.shape_name == "helix") {
+    const int args = r.shape_name == "loop" ? 4 : 5;
+    if (narg < 2 + args) error->all(FLERR, "Illegal create_wire {} command: {}", r.shape_name, usage);
+    r.loop.centre = point(2);
+    r.loop.radius = number(5);
+    if (r.shape_name == "helix") r.loop.pitch = number(6);
+    iarg = 2 + args;
+  } else if (r.shape_name == "line") {
+    if (narg < 8) error->all(FLERR, "Illegal create_wire line command: {}", usage);
+    r.shape = Request::Shape::polyline;
+    r.polyline.points = {point(2), point(5)};
+    iarg = 8;
+  } else if (r.shape_name == "polyline") {
+    r.shape = Request::Shape::polyline;
+    std::string text, problem;
+    if (comm->me == 0) {
+      std::ifstream in(arg[2]);
+      if (!in) problem = fmt::format("cannot open the polyline file {}", arg[2]);
+      std::stringstream all;
+      all << in.rdbuf();
+      text = all.str();
+    }
+    broadcast(problem);
+    if (!problem.empty()) error->all(FLERR, "create_wire: {}", problem);
+    broadcast(text);
+    std::istringstream lines(text);
+    std::string line;
+    for (int number_of_line = 1; std::getline(lines, line); number_of_line++) {
+      line = line.substr(0, line.find('#'));
+      std::istringstream words(line);
+      double x, y, z;
+      std::string extra;
+      if (!(words >> x)) continue;    // blank or comment
+      if (!(words >> y >> z) || (words >> extra))
+        error->all(FLERR, "create_wire: {}:{}: expected three numbers 'x y z', got '{}'", arg[2],
+                   number_of_line, line);
+      r.polyline.points.emplace_back(x, y, z);
+    }
+    iarg = 3;
+  } else {
+    error->all(FLERR, "create_wire: unknown path '{}' ({})", r.shape_name, usage);
+  }
+
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg) error->all(FLERR, "create_wire: keyword '{}' needs {} value(s)", key, n);
+    };
+    const bool loop_keyword = key == "turns" || key == "pitch" || key == "gap" || key == "start" || key == "axis";
+    if (loop_keyword && r.shape != Request::Shape::loop)
+      error->all(FLERR, "create_wire: '{}' applies to a loop or helix, not a {}", key, r.shape_name);
+    if (key == "bond") {
+      need(1);
+      r.bond_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else if (key == "angle") {
+      need(1);
+      r.angle_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else if (key == "mass") {
+      need(1);
+      r.mass = number(iarg + 1);
+      if (!(r.mass > 0.0) || !std::isfinite(r.mass))
+        error->all(FLERR, "create_wire: node mass {} must be positive and finite", arg[iarg + 1]);
+      iarg += 2;
+    } else if (key == "turns") {
+      need(1);
+      r.loop.turns = number(iarg + 1);
+      iarg += 2;
+    } else if (key == "pitch") {
+      need(1);
+      r.loop.pitch = number(iarg + 1);
+      iarg += 2;
+    } else if (key == "gap") {
+      need(1);
+      r.loop.gap = number(iarg + 1) * kDegree;
+      iarg += 2;
+    } else if (key == "start") {
+      need(1);
+      r.loop.start = number(iarg + 1) * kDegree;
+      iarg += 2;
+    } else if (key == "axis") {
+      need(3);
+      r.loop.axis = point(iarg + 1);
+      iarg += 4;
+    } else if (key == "nodes") {
+      need(1);
+      const bigint n = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (n < 2 || n > 100000000)
+        error->all(FLERR, "create_wire: nodes {} must be between 2 and 100000000", n);
+      r.nodes = (int) n;
+      iarg += 2;
+    } else if (key == "mol") {
+      need(1);
+      r.molecule = utils::tnumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (r.molecule < 1) error->all(FLERR, "create_wire: molecule ID {} must be >= 1", r.molecule);
+      iarg += 2;
+    } else if (key == "radius") {
+      need(1);
+      r.radius = number(iarg + 1);
+      if (!(r.radius > 0.0) || !std::isfinite(r.radius))
+        error->all(FLERR, "create_wire: radius {} must be positive and finite", arg[iarg + 1]);
+      iarg += 2;
+    } else if (key == "overlap") {
+      need(1);
+      r.check_overlap = strcmp(arg[iarg + 1], "ignore") != 0;
+      if (r.check_overlap) {
+        r.overlap = number(iarg + 1);
+        if (!(r.overlap >= 0.0))
+          error->all(FLERR, "create_wire: overlap {} must be >= 0 (a fraction of the wire radius) "
+                     "or 'ignore'", arg[iarg + 1]);
+      }
+      iarg += 2;
+    } else if (key == "strained") {
+      need(1);
+      r.strained = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
+      iarg += 2;
+    } else {
+      error->all(FLERR, "create_wire: unknown keyword '{}' (expected bond, angle, mass, turns, pitch, "
+                 "gap, start, axis, nodes, mol, radius, overlap, strained)", key);
+    }
+  }
+  if (r.bond_type == 0) error->all(FLERR, "create_wire: give the bond type of the elements ('bond BTYPE')");
+  if (r.mass < 0.0) error->all(FLERR, "create_wire: give the node mass ('mass M')");
+}
+
+/* The types must exist with bond_style wire coefficients: the bond type's rest length is the
+   element length. The nodes store one bond and one angle each. */
+void CreateWire::check_types()
+{
+  Request &r = *request;
+  if (r.bond_type < 1 || r.bond_type > atom->nbondtypes)
+    error->all(FLERR, "create_wire: bond type {} is not between 1 and {} (create_box ... bond/types N)",
+               r.bond_type, atom->nbondtypes);
+  auto *bond = dynamic_cast<BondWire *>(force->bond);
+  if (!bond)
+    error->all(FLERR, "create_wire needs bond_style wire (its rest length sets the element length); "
+               "bond_style is '{}'", force->bond_style ? force->bond_style : "none");
+  if (!bond->setflag || !bond->setflag[r.bond_type])
+    error->all(FLERR, "create_wire: bond type {} has no coefficients yet; give 'bond_coeff {} K_ELO "
+               "REST_LENGTH' first", r.bond_type, r.bond_type);
+  r.rest_length = bond->rest_length(r.bond_type);
+  if (r.angle_type != 0) {
+    if (!atom->avec->angles_allow)
+      error->all(FLERR, "create_wire: angle {} needs an atom style with angles (e.g. 'atom_style "
+                 "hybrid spheropolyhedron angle')", r.angle_type);
+    if (r.angle_type < 1 || r.angle_type > atom->nangletypes)
+      error->all(FLERR, "create_wire: angle type {} is not between 1 and {} (create_box ... "
+                 "angle/types N)", r.angle_type, atom->nangletypes);
+    if (!force->angle || !force->angle->setflag || !force->angle->setflag[r.angle_type])
+      error->all(FLERR, "create_wire: angle type {} has no coefficients yet; give angle_style wire "
+                 "and 'angle_coeff {} K_ROT' first", r.angle_type, r.angle_type);
+  }
+  if (atom->bond_per_atom < 1 || (r.angle_type && atom->angle_per_atom < 1))
+    error->all(FLERR, "create_wire: each node stores a bond and an angle; create the box with "
+               "'extra/bond/per/atom 1 extra/angle/per/atom 1' (or more)");
+  if (r.radius < 0.0) {
+    for (Fix *fix : modify->get_fix_by_style("^wire$")) {
+      int dim = 0;
+      if (auto *radius = static_cast<double *>(fix->extract("radius", dim))) r.radius = *radius;
+    }
+    if (r.radius < 0.0)
+      error->all(FLERR, "create_wire: give the wire radius ('radius RW') or define fix wire first");
+  }
+  if (r.rest_length < 2.0 * r.radius)
+    error->all(FLERR, "create_wire: element length {} (the rest length of bond type {}) is below "
+               "the wire's diameter {}: neighbouring elements would overlap; use longer elements",
+               r.rest_length, r.bond_type, 2.0 * r.radius);
+}
+
+void CreateWire::lay_out()
+{
+  Request &r = *request;
+  try {
+    const bool loop = r.shape == Request::Shape::loop;
+    if (r.nodes > 0) r.layout = loop ? lay_loop_nodes(r.loop, r.nodes) : lay_polyline_nodes(r.polyline, r.nodes);
+    else r.layout = loop ? lay_loop(r.loop, r.rest_length) : lay_polyline(r.polyline, r.rest_length);
+  } catch (std::exception &e) {
+    error->all(FLERR, "create_wire {}: {}", r.shape_name, e.what());
+  }
+  const double strain = r.layout.chord / r.rest_length - 1.0;
+  if (std::abs(strain) > kLengthTolerance && !r.strained)
+    error->all(FLERR, "create_wire {}: its {} elements are {:.10g} long, but the rest length of bond "
+               "type {} is {:.10g} (strain {:.3g}); give 'bond_coeff {} K_ELO {:.10g}', {}or add "
+               "'strained yes' to start with that strain", r.shape_name,
+               r.layout.topology.elements.size(), r.layout.chord, r.bond_type, r.rest_length, strain,
+               r.bond_type, r.layout.chord,
+               r.layout.closed ? "change the radius, leave a gap, " : "drop 'nodes', ");
+  for (nscd::wire::WireElement &e : r.layout.topology.elements) e.rest_length = r.rest_length;
+}
+
+/* Nodes in non-periodic directions must lie in the box; periodic ones are wrapped into it
+   (their image flags keep the wire whole). */
+void CreateWire::check_nodes_in_box()
+{
+  Request &r = *request;
+  const size_t n = r.layout.nodes.size();
+  r.in_box.resize(n);
+  r.images.resize(n);
+  for (size_t k = 0; k < n; k++) {
+    double x[3];
+    store(r.layout.nodes[k], x);
+    imageint image = ((imageint) IMGMAX << IMG2BITS) | ((imageint) IMGMAX << IMGBITS) | IMGMAX;
+    domain->remap(x, image);
+    double lamda[3], *coord = x;
+    if (domain->triclinic) {
+      domain->x2lamda(x, lamda);
+      coord = lamda;
+    }
+    const double *lo = domain->triclinic ? domain->boxlo_lamda : domain->boxlo;
+    const double *hi = domain->triclinic ? domain->boxhi_lamda : domain->boxhi;
+    for (int d = 0; d < 3; d++)
+      if (!domain->periodicity[d] && !(coord[d] >= lo[d] && coord[d] < hi[d]))
+        error->all(FLERR, "create_wire {}: node {} at ({:.6g}, {:.6g}, {:.6g}) is outside the box in {}; "
+                   "move or shrink the path, or enlarge the box", r.shape_name, k + 1, r.layout.nodes[k].x(),
+                   r.layout.nodes[k].y(), r.layout.nodes[k].z(), "xyz"[d]);
+    r.in_box[k] = vec3(x);
+    r.images[k] = image;
+  }
+}
+
+/* The wire must not start inside grains or walls: each rank tests its own grains against
+   the elements near them (nearest periodic image), every rank the walls against the node
+   spheres; the deepest overlap beyond the tolerance stops the command, named. */
+void CreateWire::check_overlaps()
+{
+  Request &r = *request;
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  const auto &elements = r.layout.topology.elements;
+  std::vector<nscd::Vec3> middles;
+  for (const auto &e : elements) middles.push_back(0.5 * (r.layout.nodes[e.a] + r.layout.nodes[e.b]));
+  nscd::PointGrid grid;
+  grid.build(middles, std::max(r.layout.chord, 2.0 * r.radius));
+  const double allowed = r.overlap * r.radius;
+
+  double worst[2] = {-1.0, 0.0};    // overlap depth, grain ID
+  nscd::ContactWorkspace workspace;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (avec->shape[i] == 0) continue;
+    const nscd::Pose pose = avec->pose(i);
+    const double reach = avec->radius[i] + 0.5 * r.layout.chord + r.radius;
+    for (int shift = 0; shift < 27; shift++) {    // periodic images of the grain
+      nscd::Vec3 offset = nscd::Vec3::Zero();
+      bool skip = false;
+      for (int d = 0, code = shift; d < 3; d++, code /= 3) {
+        const int image = code % 3 - 1;
+        if (image != 0 && !domain->periodicity[d]) skip = true;
+        offset[d] = image * domain->prd[d];
+      }
+      if (skip) continue;
+      nscd::Pose shifted = pose;
+      shifted.position += offset;
+      grid.for_each_near(shifted.position, reach, [&](int e) {
+        const nscd::Segment segment{r.layout.nodes[elements[e].a], r.layout.nodes[elements[e].b], r.radius};
+        const nscd::SegmentGrainContact contact =
+            nscd::contact_segment_grain(segment, avec->shape_of(i), shifted, 0.0, workspace);
+        for (const nscd::SegmentContact &p : contact)
+          if (-p.gap > worst[0]) worst[0] = -p.gap, worst[1] = (double) atom->tag[i];
+      });
+    }
+  }
+  double deepest[2];
+  MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
+  if (deepest[0] > allowed)
+    error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}, {} x "
+               "the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
+               r.shape_name, (tagint) deepest[1], deepest[0], allowed, r.overlap);
+
+  for (Fix *fix : modify->get_fix_list()) {
+    auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
+    if (!boundary_fix) continue;
+    for (size_t k = 0; k < r.in_box.size(); k++) {
+      const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
+      if (-p.gap > allowed)
+        error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} "
+                   "(allowed: {:.4g}); lay the wire inside the walls, or use 'overlap ignore'",
+                   r.shape_name, k + 1, fix->id, -p.gap, allowed);
+    }
+  }
+}
+
+/* Each rank creates the nodes whose positions lie in its sub-domain, with consecutive new
+   atom IDs and the molecule ID. */
+void CreateWire::create_nodes()
+{
+  Request &r = *request;
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  tagint mine = 0, mol = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    mine = std::max(mine, atom->tag[i]);
+    if (atom->molecule) mol = std::max(mol, atom->molecule[i]);
+  }
+  tagint max_tag, max_mol;
+  MPI_Allreduce(&mine, &max_tag, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  MPI_Allreduce(&mol, &max_mol, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  r.first_tag = max_tag + 1;
+  if (r.molecule < 0) r.molecule = max_mol + 1;
+
+  const bigint natoms_before = atom->natoms;
+  const int nlocal_before = atom->nlocal;
+  // New atoms take the slots after the owned ones, where the ghosts of the last run are:
+  // those are gone now (as in create_atoms), the next run's setup rebuilds them.
+  atom->nghost = 0;
+  atom->avec->clear_bonus();
+  const double *sublo = domain->triclinic ? domain->sublo_lamda : domain->sublo;
+  const double *subhi = domain->triclinic ? domain->subhi_lamda : domain->subhi;
+  for (size_t k = 0; k < r.in_box.size(); k++) {
+    double x[3], lamda[3], *coord = x;
+    store(r.in_box[k], x);
+    if (domain->triclinic) {
+      domain->x2lamda(x, lamda);
+      coord = lamda;
+    }
+    if (!(coord[0] >= sublo[0] && coord[0] < subhi[0] && coord[1] >= sublo[1] && coord[1] < subhi[1] &&
+          coord[2] >= sublo[2] && coord[2] < subhi[2]))
+      continue;
+    atom->avec->create_atom(r.node_type, x);
+    const int i = atom->nlocal - 1;
+    atom->tag[i] = r.first_tag + (tagint) k;
+    atom->molecule[i] = r.molecule;
+    atom->image[i] = r.images[k];
+    avec->set_shape(i, 0, r.mass);
+  }
+  atom->data_fix_compute_variable(nlocal_before, atom->nlocal);
+  bigint nlocal = atom->nlocal;
+  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (atom->natoms != natoms_before + (bigint) r.in_box.size())
+    error->all(FLERR, "create_wire {}: {} of {} nodes found no rank (on the box's upper faces?); "
+               "move the path inside the box", r.shape_name,
+               natoms_before + (bigint) r.in_box.size() - atom->natoms, r.in_box.size());
+  atom->tag_check();
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+}
+
+/* A bond is stored on its first node, an angle on its middle node (and with newton_bond off
+   also on the others), as create_bonds does. */
+void CreateWire::create_bonds_and_angles()
+{
+  const Request &r = *request;
+  auto local = [&](int node) {
+    const int i = atom->map(r.first_tag + node);
+    return i >= 0 && i < atom->nlocal ? i : -1;
+  };
+  auto add_bond = [&](int i, int other) {
+    if (i < 0) return;
+    if (atom->num_bond[i] == atom->bond_per_atom)
+      error->one(FLERR, "create_wire: node ID {} has no room for another bond; create the box with "
+                 "more 'extra/bond/per/atom'", atom->tag[i]);
+    atom->bond_type[i][atom->num_bond[i]] = r.bond_type;
+    atom->bond_atom[i][atom->num_bond[i]++] = r.first_tag + other;
+  };
+  for (const auto &e : r.layout.topology.elements) {
+    add_bond(local(e.a), e.b);
+    if (!force->newton_bond) add_bond(local(e.b), e.a);
+  }
+  atom->nbonds += (bigint) r.layout.topology.elements.size();
+  if (!r.angle_type) return;
+
+  auto add_angle = [&](int i, const nscd::wire::WireJoint &j) {
+    if (i < 0) return;
+    if (atom->num_angle[i] == atom->angle_per_atom)
+      error->one(FLERR, "create_wire: node ID {} has no room for another angle; create the box with "
+                 "more 'extra/angle/per/atom'", atom->tag[i]);
+    const int m = atom->num_angle[i]++;
+    atom->angle_type[i][m] = r.angle_type;
+    atom->angle_atom1[i][m] = r.first_tag + j.a;
+    atom->angle_atom2[i][m] = r.first_tag + j.b;
+    atom->angle_atom3[i][m] = r.first_tag + j.c;
+  };
+  for (const auto &j : r.layout.topology.joints) {
+    add_angle(local(j.b), j);
+    if (!force->newton_bond) {
+      add_angle(local(j.a), j);
+      add_angle(local(j.c), j);
+    }
+  }
+  atom->nangles += (bigint) r.layout.topology.joints.size();
+}

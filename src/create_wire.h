@@ -1,0 +1,44 @@
+/* create_wire: lays a wire (nodes, bond_style wire elements, angle_style wire joints) along
+   a loop, helix, line or polyline, on any number of ranks. The path geometry is
+   lib/wire/wire_path.h. See doc/create_wire.md. */
+
+#ifdef COMMAND_CLASS
+// clang-format off
+CommandStyle(create_wire,CreateWire);
+// clang-format on
+#else
+
+#ifndef LMP_CREATE_WIRE_H
+#define LMP_CREATE_WIRE_H
+
+#include "command.h"
+
+#include <memory>
+#include <string>
+
+namespace LAMMPS_NS {
+
+class CreateWire : public Command {
+ public:
+  CreateWire(class LAMMPS *);
+  ~CreateWire() override;
+  void command(int, char **) override;
+
+ private:
+  struct Request;    // the parsed command (create_wire.cpp)
+  std::unique_ptr<Request> request;
+
+  void parse(int narg, char **arg);
+  void check_types();
+  void lay_out();
+  void check_nodes_in_box();
+  void check_overlaps();
+  void create_nodes();
+  void create_bonds_and_angles();
+  void broadcast(std::string &text);    // from rank 0 to all
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,445 @@
+"""Command line: one subcommand per figure (doc/analysis.md). Each writes PREFIX.png and
+PREFIX.csv (the numbers behind the picture) unless said otherwise."""
+
+import argparse
+import csv
+import os
+import sys
+
+import numpy as np
+
+from . import cylinder, fabric, forces, logs, vtk, wire_contacts
+from .dumps import DumpError, read_dumps
+from .layouts import FABRIC, WIRE_GRAIN
+
+DPI = 100
+
+
+def _pyplot():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def _save(fig, prefix):
+    os.makedirs(os.path.dirname(os.path.abspath(prefix)), exist_ok=True)
+    fig.savefig(prefix + ".png", dpi=DPI)
+    _pyplot().close(fig)
+    return prefix + ".png"
+
+
+def _write_csv(prefix, header, rows, comments=()):
+    with open(prefix + ".csv", "w", newline="") as f:
+        for line in comments:
+            f.write(f"# {line}\n")
+        w = csv.writer(f)
+        w.writerow(header)
+        for row in rows:
+            w.writerow([_fmt(v) for v in row])
+    return prefix + ".csv"
+
+
+def _fmt(v):
+    if isinstance(v, (float, np.floating)):
+        return "nan" if np.isnan(v) else f"{v:.6g}"
+    return v
+
+
+def _zrange(args):
+    if args.zmin is None and args.zmax is None:
+        return None
+    return (-np.inf if args.zmin is None else args.zmin, np.inf if args.zmax is None else args.zmax)
+
+
+def _grain_axis(args, snapshot):
+    """The axis given, or the centre of mass of the snapshot's grains (x y z columns)."""
+    if args.axis is not None:
+        return np.array(args.axis)
+    pos = np.column_stack([snapshot.first_column(n) for n in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
+    masses = snapshot.column("mass") if snapshot.has("mass") else None
+    return cylinder.axis_from_centre_of_mass(pos, masses)
+
+
+def _r_edges(args, r_values):
+    return cylinder.edges(r_values, count=args.rbins, width=args.rwidth, high=args.rmax)
+
+
+def _z_edges(args, z_values):
+    """--zbins bins from --zmin (default: lowest z) to --zmax (default: highest z)."""
+    low = args.zmin if args.zmin is not None else (float(np.min(z_values)) if len(z_values) else 0.0)
+    return cylinder.edges(z_values, count=args.zbins, low=low, high=args.zmax)
+
+
+# --- cylavg: any per-atom column averaged in (r, z) bins --------------------------------
+
+def cmd_cylavg(args):
+    snaps = read_dumps(args.dump, args.steps, args.last)
+    r_all, z_all, v_all = [], [], []
+    for s in snaps:
+        axis = _grain_axis(args, s)
+        pos = np.column_stack([s.first_column(n) for n in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
+        cyl = cylinder.Cylindrical(pos, axis)
+        r_all.append(cyl.r)
+        z_all.append(cyl.z)
+        v_all.append(s.column(args.value, FABRIC))
+    r, z, v = map(np.concatenate, (r_all, z_all, v_all))
+    r_edges = _r_edges(args, r)
+    z_edges = _z_edges(args, z)
+    count, mean = cylinder.binned_mean_2d(v, r, z, r_edges, z_edges)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(5.0, 5.0))
+    mesh = ax.pcolormesh(r_edges, z_edges, np.ma.masked_invalid(mean.T), shading="flat", cmap="viridis")
+    fig.colorbar(mesh, ax=ax, label=args.value)
+    ax.set_xlabel("r")
+    ax.set_ylabel("z")
+    ax.set_title(f"{args.value} averaged around the axis ({len(snaps)} snapshot(s))")
+    fig.tight_layout()
+    rows = [(r_edges[i], r_edges[i + 1], z_edges[j], z_edges[j + 1], count[i, j], mean[i, j])
+            for i in range(len(r_edges) - 1) for j in range(len(z_edges) - 1)]
+    print(_save(fig, args.out), _write_csv(args.out, ["r_lo", "r_hi", "z_lo", "z_hi", "count", "mean"], rows))
+
+
+# --- fabric-field: the papers' Fig. 3 ---------------------------------------------------
+
+def _pooled_fabric(args, patterns, steps, last):
+    r_all, z_all, blocks_all, angle_all = [], [], [], []
+    snaps = read_dumps(patterns, steps, last)
+    for s in snaps:
+        r, z, blocks, angle = fabric.per_grain(s, _grain_axis(args, s), _zrange(args))
+        r_all.append(r), z_all.append(z), blocks_all.append(blocks), angle_all.append(angle)
+    return (np.concatenate(r_all), np.concatenate(z_all), np.concatenate(blocks_all),
+            np.concatenate(angle_all), len(snaps))
+
+
+def cmd_fabric_field(args):
+    r, z, blocks, _, nsnap = _pooled_fabric(args, args.dump, args.steps, args.last)
+    r_edges = _r_edges(args, r)
+    z_edges = _z_edges(args, z)
+    count, mean = cylinder.binned_mean_2d(blocks.reshape(len(blocks), 4), r, z, r_edges, z_edges)
+    rc, zc = cylinder.centres(r_edges), cylinder.centres(z_edges)
+    rows, segments = [], []
+    for i in range(len(rc)):
+        for j in range(len(zc)):
+            if count[i, j] == 0:
+                continue
+            block = mean[i, j].reshape(2, 2)
+            lam_max, v_max, lam_min, v_min = fabric.principal_rz(block[None])
+            angle = float(fabric.signed_angle(v_max)[0])
+            rows.append((rc[i], zc[j], count[i, j], block[0, 0], block[0, 1], block[1, 1], lam_max[0],
+                         v_max[0, 0], v_max[0, 1], lam_min[0], v_min[0, 0], v_min[0, 1], angle))
+            segments.append((rc[i], zc[j], lam_max[0], v_max[0], lam_min[0], v_min[0], angle))
+    plt = _pyplot()
+    from matplotlib.collections import LineCollection
+    fig, ax = plt.subplots(figsize=(5.0, 6.0))
+    cell = min(np.diff(r_edges).min(), np.diff(z_edges).min())
+    scale = 0.9 * cell / max([s[2] for s in segments] + [1e-300])
+    limit = max([abs(s[6]) for s in segments] + [1e-3])
+    big = [[(x - 0.5 * scale * l * v[0], y - 0.5 * scale * l * v[1]), (x + 0.5 * scale * l * v[0], y + 0.5 * scale * l * v[1])]
+           for x, y, l, v, _, _, _ in segments]
+    small = [[(x - 0.5 * scale * l * v[0], y - 0.5 * scale * l * v[1]), (x + 0.5 * scale * l * v[0], y + 0.5 * scale * l * v[1])]
+             for x, y, _, _, l, v, _ in segments]
+    ax.add_collection(LineCollection(small, colors="0.35", linewidths=0.8))
+    lc = LineCollection(big, array=np.array([s[6] for s in segments]), cmap="coolwarm", linewidths=3.0)
+    lc.set_clim(-limit, limit)
+    ax.add_collection(lc)
+    fig.colorbar(lc, ax=ax, label="signed angle of the largest direction with z (rad)")
+    ax.set_xlim(r_edges[0], r_edges[-1])
+    ax.set_ylim(z_edges[0], z_edges[-1])
+    ax.set_aspect("equal")
+    ax.set_xlabel("r")
+    ax.set_ylabel("z")
+    ax.set_title(f"fabric in the r-z plane ({len(r)} grains, {nsnap} snapshot(s))", fontsize=9)
+    fig.tight_layout()
+    header = ["r", "z", "grains", "F_rr", "F_rz", "F_zz", "lambda_max", "vmax_r", "vmax_z", "lambda_min",
+              "vmin_r", "vmin_z", "angle_rad"]
+    print(_save(fig, args.out), _write_csv(args.out, header, rows, [
+        "mean r-z block of the grains' fabric tensors in their cylindrical frame per (r, z) bin;",
+        "angle: of the largest principal direction with z, positive = leaning outward going up (inward going down)"]))
+
+
+# --- fabric-angle: the papers' Fig. 4 ---------------------------------------------------
+
+def _parse_runs(runs):
+    out = []
+    for run in runs:
+        label, sep, pattern = run.rpartition("=")    # labels may hold "=" (Fz=800)
+        if not sep or not label or not pattern:
+            raise SystemExit(f"nscd-analysis: --run '{run}' must be LABEL=FILES (e.g. column='col/fabric.*.dump')")
+        out.append((label, pattern.split(",")))
+    return out
+
+
+def angle_profile(r, blocks, angle, r_edges):
+    """Per r bin: grains, mean of the per-grain angles, its standard error, and the angle of
+    the bin's mean r-z block."""
+    ok = ~np.isnan(angle)
+    count, mean, sem = cylinder.binned_mean(angle[ok], r[ok], r_edges)
+    _, mean_block, _ = cylinder.binned_mean(blocks.reshape(len(blocks), 4), r, r_edges)
+    tensor_angle = np.full(len(count), np.nan)
+    for b in range(len(count)):
+        if not np.isnan(mean_block[b]).any():
+            tensor_angle[b] = fabric.signed_angle(fabric.principal_rz(mean_block[b].reshape(1, 2, 2))[1])[0]
+    return count, mean, sem, tensor_angle
+
+
+def cmd_fabric_angle(args):
+    runs = [(label, _pooled_fabric(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
+    r_edges = _r_edges(args, np.concatenate([data[0] for _, data in runs]))
+    rc = cylinder.centres(r_edges)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    rows, summary = [], []
+    for label, (r, _, blocks, angle, nsnap) in runs:
+        count, mean, sem, tensor_angle = angle_profile(r, blocks, angle, r_edges)
+        value = tensor_angle if args.method == "tensor" else mean
+        ax.errorbar(rc, value, yerr=None if args.method == "tensor" else sem, marker="o", ms=4, capsize=2, label=label)
+        for b in range(len(rc)):
+            rows.append((label, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b], tensor_angle[b]))
+        overall = np.nanmean(angle)
+        summary.append(f"{label}: mean angle over all grains {overall:+.4f} rad ({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.set_xlabel("r")
+    ax.set_ylabel("signed angle of the largest fabric direction (rad)")
+    ax.set_title("mean over grains" if args.method == "grains" else "angle of the mean tensor", fontsize=9)
+    ax.legend()
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "mean_angle_rad",
+                                                       "sem_rad", "tensor_angle_rad"], rows, summary))
+    for line in summary:
+        print(line)
+
+
+# --- force-profile: the papers' Fig. 5 --------------------------------------------------
+
+def cmd_force_profile(args):
+    snaps = read_dumps(args.dump, args.steps, args.last)
+    labels = args.labels or [f"step {s.timestep}" for s in snaps]
+    if len(labels) != len(snaps):
+        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+    profiles = []
+    for s in snaps:
+        positions, _, centres = forces.grain_contacts(s, args.points)
+        axis = np.array(args.axis) if args.axis is not None else cylinder.axis_from_centre_of_mass(centres)
+        profiles.append((s, axis, cylinder.Cylindrical(positions, axis).r if len(positions) else np.zeros(0)))
+    r_edges = _r_edges(args, np.concatenate([p[2] for p in profiles]))
+    rc = cylinder.centres(r_edges)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    rows = []
+    for (s, axis, _), label in zip(profiles, labels):
+        count, mean, sem, _ = forces.radial_profile(s, r_edges, axis, _zrange(args), args.points)
+        ax.errorbar(rc, mean, yerr=sem, marker="o", ms=4, capsize=2, label=label)
+        for b in range(len(rc)):
+            rows.append((label, s.timestep, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b]))
+    ax.set_xlabel("r")
+    ax.set_ylabel("mean normal force between grains")
+    ax.legend()
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "contacts",
+                                                       "mean_fn", "sem_fn"], rows))
+
+
+# --- wire-contacts: the papers' Fig. 6 --------------------------------------------------
+
+def cmd_wire_contacts(args):
+    snaps = read_dumps(args.dump, args.steps, args.last)
+    labels = args.labels or [f"step {s.timestep}" for s in snaps]
+    if len(labels) != len(snaps):
+        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+    plt = _pyplot()
+    from matplotlib.ticker import MaxNLocator
+    fig, axes = plt.subplots(len(snaps), 2, figsize=(6.4, 2.4 * len(snaps)), subplot_kw={"projection": "polar"},
+                             squeeze=False)
+    rows, summary = [], []
+    for (s, label), (left, right) in zip(zip(snaps, labels), axes):
+        points, f = wire_contacts.forces_on_wire(s, args.kind)
+        axis = np.array(args.axis) if args.axis is not None else (
+            cylinder.axis_from_centre_of_mass(points) if len(points) else np.zeros(2))
+        alpha, magnitude = wire_contacts.orientation_rz(points, f, axis)
+        edges, fraction, mean, normalised = wire_contacts.polar_histogram(alpha, magnitude, args.bins)
+        near = wire_contacts.fraction_near_vertical(alpha, args.vertical_within)
+        summary.append(f"{label}: {len(alpha)} contacts, fraction within {args.vertical_within:g} deg of the "
+                       f"vertical {near:.3f}, mean in-plane force {np.mean(magnitude) if len(magnitude) else np.nan:.4g}")
+        width = np.diff(edges)
+        left.bar(edges[:-1], fraction, width=width, align="edge", color="tab:blue", edgecolor="k", lw=0.4)
+        right.bar(edges[:-1], np.nan_to_num(normalised), width=width, align="edge", color="tab:orange",
+                  edgecolor="k", lw=0.4)
+        for ax, title in ((left, f"{label}: fraction of contacts"), (right, f"{label}: mean |f| / max")):
+            ax.set_thetamin(0)
+            ax.set_thetamax(180)
+            ax.set_title(title, fontsize=9)
+            ax.yaxis.set_major_locator(MaxNLocator(3))
+            ax.tick_params(labelsize=7)
+        for b in range(args.bins):
+            rows.append((label, s.timestep, np.degrees(edges[b]), np.degrees(edges[b + 1]), fraction[b], mean[b],
+                         normalised[b]))
+        rows.append((label, s.timestep, "within", args.vertical_within, near, "", ""))
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "alpha_lo_deg", "alpha_hi_deg", "fraction",
+                                                       "mean_force", "mean_force_normalised"], rows,
+                                           ["alpha: angle of (f_r, f_z) from the radial direction, 90 = vertical;",
+                                            "rows 'within': fraction of contacts within that many degrees of 90"] + summary))
+    for line in summary:
+        print(line)
+
+
+# --- timeseries -------------------------------------------------------------------------
+
+# The thermo columns of examples/column/in.column (and examples/silo), for --preset column.
+COLUMN_PRESET = ["Step:v_height", "Step:v_retained", "Step:v_e_stretch,v_e_bend,v_e_contact",
+                 "v_plate_disp:v_plate_force"]
+
+
+def cmd_timeseries(args):
+    panels = []
+    specs = (COLUMN_PRESET if args.preset == "column" else []) + (args.plot or [])
+    if not specs:
+        raise SystemExit("nscd-analysis timeseries: give --plot X:Y (or --preset column)")
+    for spec in specs:
+        x, sep, ys = spec.partition(":")
+        if not sep or not ys:
+            raise SystemExit(f"nscd-analysis: --plot '{spec}' must be X:Y[,Y2...] (thermo column names)")
+        panels.append((x, ys.split(",")))
+    plt = _pyplot()
+    fig, axes = plt.subplots(len(panels), 1, figsize=(6.0, 2.4 * len(panels)), squeeze=False)
+    names = []
+    for x, ys in panels:
+        for n in [x] + ys:
+            if n not in names:
+                names.append(n)
+    for (x, ys), (ax,) in zip(panels, axes):
+        data = logs.thermo_columns(args.log, [x] + ys)
+        for k, y in enumerate(ys):
+            ax.plot(data[:, 0], data[:, k + 1], label=y)
+        ax.set_xlabel(x)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    table = logs.thermo_columns(args.log, names, require_all=False)
+    print(_save(fig, args.out), _write_csv(args.out, names, table.tolist()))
+
+
+# --- VTK for ParaView ---------------------------------------------------------------------
+
+def cmd_vtk_network(args):
+    for s in read_dumps(args.dump, args.steps, args.last):
+        points, lines, point_data, cells = vtk.network(s, args.with_boundaries, args.reference_force)
+        path = f"{args.out}.{s.timestep}.vtp"
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+        vtk.write_polydata(path, points, lines, point_data, cells)
+        print(path, f"{len(lines)} pairs")
+
+
+def cmd_vtk_wire(args):
+    nodes = {s.timestep: s for s in read_dumps(args.nodes)}
+    written = 0
+    for elements in read_dumps(args.elements, args.steps, args.last):
+        if elements.timestep not in nodes:
+            print(f"nscd-analysis: step {elements.timestep}: no node positions in {' '.join(args.nodes)}; skipped",
+                  file=sys.stderr)
+            continue
+        points, lines, point_data, cells = vtk.wire(elements, nodes[elements.timestep], args.reference_energy)
+        path = f"{args.out}.{elements.timestep}.vtp"
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+        vtk.write_polydata(path, points, lines, point_data, cells)
+        print(path, f"{len(lines)} elements")
+        written += 1
+    if written == 0:
+        raise SystemExit("nscd-analysis: no step with both element rows and node positions")
+
+
+# --- argument parsing -------------------------------------------------------------------------
+
+def _common(p, axis=True, bins=True):
+    p.add_argument("--out", "-o", required=True, help="output prefix: PREFIX.png and PREFIX.csv")
+    p.add_argument("--steps", type=int, nargs="+", help="only these timesteps")
+    p.add_argument("--last", action="store_true", help="only the last snapshot")
+    if axis:
+        p.add_argument("--axis", type=float, nargs=2, metavar=("X", "Y"),
+                       help="vertical column axis through (X, Y); default: the grains' centre of mass")
+        p.add_argument("--zmin", type=float, help="only grains/contacts with z >= ZMIN")
+        p.add_argument("--zmax", type=float, help="only grains/contacts with z <= ZMAX")
+    if bins:
+        p.add_argument("--rbins", type=int, default=8, help="number of r bins (default 8)")
+        p.add_argument("--rwidth", type=float, help="r bin width (instead of --rbins)")
+        p.add_argument("--rmax", type=float, help="outer r of the last bin (default: largest r)")
+
+
+def parser():
+    top = argparse.ArgumentParser(prog="nscd-analysis", description=__doc__)
+    sub = top.add_subparsers(dest="command", required=True)
+
+    p = sub.add_parser("cylavg", help="a per-atom column averaged in (r, z) bins")
+    p.add_argument("dump", nargs="+", help="dump custom files (glob patterns allowed)")
+    p.add_argument("--value", required=True, help="column name, e.g. c_fab[7] or nc")
+    p.add_argument("--zbins", type=int, default=8)
+    _common(p)
+    p.set_defaults(func=cmd_cylavg)
+
+    p = sub.add_parser("fabric-field", help="Fig. 3: principal fabric directions in the r-z plane")
+    p.add_argument("dump", nargs="+", help="dump custom files with x y z and compute fabric/atom's columns")
+    p.add_argument("--zbins", type=int, default=8)
+    _common(p)
+    p.set_defaults(func=cmd_fabric_field)
+
+    p = sub.add_parser("fabric-angle", help="Fig. 4: mean signed angle of the largest fabric direction vs r")
+    p.add_argument("--run", action="append", required=True,
+                   help="LABEL=FILES (comma-separated names or glob patterns); repeat per run")
+    p.add_argument("--method", choices=("grains", "tensor"), default="grains",
+                   help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
+    _common(p)
+    p.set_defaults(func=cmd_fabric_angle)
+
+    p = sub.add_parser("force-profile", help="Fig. 5: mean normal force between grains vs r")
+    p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
+    p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. the plate loads)")
+    p.add_argument("--points", action="store_true", help="the dump has one row per point (no 'pairs')")
+    _common(p)
+    p.set_defaults(func=cmd_force_profile)
+
+    p = sub.add_parser("wire-contacts", help="Fig. 6: polar histograms of wire-grain force orientations")
+    p.add_argument("dump", nargs="+", help="dump local files of compute wire/contacts")
+    p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. 'no load' 'Fz = 800')")
+    p.add_argument("--bins", type=int, default=12, help="angular bins over 180 degrees (default 12)")
+    p.add_argument("--kind", type=int, default=WIRE_GRAIN, help="contact kind: 1 wire-grain (default), 2, 3")
+    p.add_argument("--vertical-within", type=float, default=30.0, help="degrees (default 30)")
+    _common(p, bins=False)
+    p.set_defaults(func=cmd_wire_contacts)
+
+    p = sub.add_parser("timeseries", help="thermo columns of a log against each other")
+    p.add_argument("log", help="LAMMPS log file")
+    p.add_argument("--plot", action="append", help="X:Y[,Y2...], one panel each")
+    p.add_argument("--preset", choices=("column",),
+                   help="column: height, retained fraction, wire energies vs step and plate force vs "
+                        "displacement, as examples/column/in.column prints them")
+    p.add_argument("--out", "-o", required=True)
+    p.set_defaults(func=cmd_timeseries)
+
+    p = sub.add_parser("vtk-network", help="force network as .vtp line segments (one file per step)")
+    p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
+    p.add_argument("--out", "-o", required=True, help="writes OUT.<step>.vtp")
+    p.add_argument("--steps", type=int, nargs="+")
+    p.add_argument("--last", action="store_true")
+    p.add_argument("--with-boundaries", action="store_true", help="also grain-wall/plate pairs")
+    p.add_argument("--reference-force", type=float, help="fn_norm = fn / this (default: the step's largest fn)")
+    p.set_defaults(func=cmd_vtk_network)
+
+    p = sub.add_parser("vtk-wire", help="wire as .vtp line segments with per-element energy (one file per step)")
+    p.add_argument("--elements", nargs="+", required=True, help="dump local files of compute wire/local")
+    p.add_argument("--nodes", nargs="+", required=True, help="dump custom files with id x y z of the wire nodes")
+    p.add_argument("--out", "-o", required=True, help="writes OUT.<step>.vtp")
+    p.add_argument("--steps", type=int, nargs="+")
+    p.add_argument("--last", action="store_true")
+    p.add_argument("--reference-energy", type=float, help="energy_norm = energy / this (default: the step's largest)")
+    p.set_defaults(func=cmd_vtk_wire)
+    return top
+
+
+def main(argv=None):
+    args = parser().parse_args(argv)
+    try:
+        args.func(args)
+    except (DumpError, logs.LogError, ValueError, OSError) as e:
+        print(f"nscd-analysis {args.command}: {e}", file=sys.stderr)
+        return 1
+    return 0
