@@ -12,6 +12,10 @@
 // steps), the mean residual reached and the solve time per step. --ramp R multiplies the
 // load by 1 + R k in step k; --verbose prints every step, --trace N the residual after every
 // sweep of step N.
+// Error: the cold step and the last step are also solved by plain Gauss-Seidel to --ref-tol
+// (default 1e-9) from the same state; "err cold"/"err last" is the largest difference of the
+// end-of-step velocities over the bodies (|dv| + |dw| L, L the body's bounding size) in
+// units of |g| dt, the velocity one step of gravity gives.
 #include "grain_scene.h"
 
 #include "solver/rigid_motion.h"
@@ -30,6 +34,7 @@ using namespace nscd::bench;
 namespace {
 
 bool verbose = false;
+double reference_tolerance = 1e-9;
 int trace_step = -1, trace_sweeps = 100;
 const std::string kPileState = std::string(NSCD_SOURCE_DIR) + "/benchmarks/solver/pile_324.state";
 
@@ -139,6 +144,30 @@ std::vector<SceneCase> all_scenes()
   };
 }
 
+// The velocity error of `solved` (the scene after a step of some method) against plain
+// Gauss-Seidel to reference_tolerance from `before` (the scene before that step), in |g| dt.
+double velocity_error(GrainScene before, const GrainScene &solved, const SolverOptions &method)
+{
+  SolverOptions tight;
+  tight.dt = method.dt;
+  tight.theta = method.theta;
+  tight.tolerance = reference_tolerance;
+  tight.max_sweeps = 2000000;
+  ContactProblem problem;
+  const SolveReport report = before.step(problem, tight);
+  if (!report.converged)
+    std::fprintf(stderr, "reference not converged: residual %.2e after %d sweeps\n",
+                 report.residual, report.sweeps);
+  double error = 0.0;
+  for (std::size_t k = 0; k < solved.bodies.size(); ++k) {
+    const SceneBody &a = solved.bodies[k], &b = before.bodies[k];
+    const double size = 2.0 * solved.shapes[a.shape].bounding_radius;
+    error = std::max(error, (a.velocity - b.velocity).norm() +
+                                size * (a.angular_velocity - b.angular_velocity).norm());
+  }
+  return error / (before.gravity.norm() * method.dt);
+}
+
 struct Row {
   int cold = 0;               // step 0: the same problem for every method, no warm start
   double warm_mean = 0.0;     // steps 1..: the method's own trajectory and warm starts
@@ -146,6 +175,7 @@ struct Row {
   double residual_mean = 0.0;
   double ms_per_step = 0.0;   // solve time
   int unconverged = 0;
+  double error_cold = 0.0, error_last = 0.0;    // velocity_error()
 };
 
 Row measure(const SceneCase &scene_case, const Method &method, double tolerance, int steps,
@@ -165,10 +195,15 @@ Row measure(const SceneCase &scene_case, const Method &method, double tolerance,
     scene.warm_start = step > 0;
     scene.load_factor = 1.0 + ramp * step;
     if (step == trace_step) trace_solve(scene, options);
+    const bool compare = step == 0 || step == steps - 1;
+    GrainScene before;
+    if (compare) before = scene;
     const auto start = std::chrono::steady_clock::now();
     const SolveReport report = scene.step(problem, options);
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     row.residual_mean += report.residual / steps;
+    if (step == 0) row.error_cold = velocity_error(before, scene, options);
+    if (step == steps - 1) row.error_last = velocity_error(before, scene, options);
     if (!report.converged) ++row.unconverged;
     if (step == 0) {
       row.cold = report.sweeps;
@@ -237,6 +272,7 @@ int main(int argc, char **argv)
     const char *value = argv[++k];
     if (arg == "--tol") tolerance = std::atof(value);
     else if (arg == "--steps") steps = std::atoi(value);
+    else if (arg == "--ref-tol") reference_tolerance = std::atof(value);
     else if (arg == "--ramp") ramp = std::atof(value);
     else if (arg == "--trace") trace_step = std::atoi(value);
     else if (arg == "--trace-sweeps") trace_sweeps = std::atoi(value);
@@ -253,16 +289,17 @@ int main(int argc, char **argv)
   std::printf("tolerance %g, %d steps, load +%g per step. Sweeps: cold = step 0 without warm "
               "start; warm = steps 1.., warm-started from the method's own answers, mean (max)\n",
               tolerance, steps, ramp);
-  std::printf("%-13s %-15s %7s %16s %9s %9s %6s\n", "scene", "method", "cold", "warm mean(max)",
-              "residual", "ms/step", "unconv");
+  std::printf("%-13s %-15s %7s %16s %9s %9s %6s %9s %9s\n", "scene", "method", "cold",
+              "warm mean(max)", "residual", "ms/step", "unconv", "err cold", "err last");
   for (const SceneCase &scene_case : all_scenes()) {
     if (!wanted(scene_names, scene_case.name)) continue;
     for (const Method &method : all_methods()) {
       if (!wanted(method_names, method.name)) continue;
       const Row row = measure(scene_case, method, tolerance, steps, ramp);
-      std::printf("%-13s %-15s %7d %9.1f(%5d) %9.2e %9.3f %6d\n", scene_case.name.c_str(),
-                  method.name.c_str(), row.cold, row.warm_mean, row.warm_max, row.residual_mean,
-                  row.ms_per_step, row.unconverged);
+      std::printf("%-13s %-15s %7d %9.1f(%5d) %9.2e %9.3f %6d %9.2e %9.2e\n",
+                  scene_case.name.c_str(), method.name.c_str(), row.cold, row.warm_mean,
+                  row.warm_max, row.residual_mean, row.ms_per_step, row.unconverged,
+                  row.error_cold, row.error_last);
       std::fflush(stdout);
     }
   }
