@@ -48,7 +48,7 @@ def read_log(path):
 
 def summarise(path):
     rows, loop, command, grains = read_log(path)
-    steps = [r for r in rows if r[0] >= 1]
+    steps = rows[1:]    # the first row is the setup's, before any solve
     if not steps or loop is None:
         return None
     sweeps = [r[1] for r in steps]

@@ -152,7 +152,7 @@ double velocity_error(GrainScene before, const GrainScene &solved, const SolverO
   tight.dt = method.dt;
   tight.theta = method.theta;
   tight.tolerance = reference_tolerance;
-  tight.max_sweeps = 2000000;
+  tight.max_sweeps = 200000;
   ContactProblem problem;
   const SolveReport report = before.step(problem, tight);
   if (!report.converged)

@@ -80,6 +80,27 @@ class NSCDTest : public LammpsTest {
   }
   FixNSCD *solver() { return dynamic_cast<FixNSCD *>(lmp->modify->get_fix_by_id("solver")); }
 
+  // 27 random grains on a loose lattice above the floor of a 6 x 6 box (poured by the caller)
+  std::vector<std::string> small_pile_grains()
+  {
+    return {"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+            "shapes random 8 seed 7 vertices 12 20 size 0.8 1.2 axes 0.8 0.6 radius 0.05",
+            "lattice sc " + num(1.0 / (1.7 * 1.7 * 1.7)), "region sites block 0 2.99 0 2.99 0 2.99",
+            "region box block -0.5 6.5 -0.5 6.5 -1 8 units box", "create_box 1 box",
+            "create_atoms 1 region sites", "displace_atoms all move 1.2 1.2 1.2 units box",
+            "shapes assign all shape random 1 8 11 density 1 orient random 13",
+            "pair_style nscd activation 0.1", "pair_coeff * * 0.5"};
+  }
+  // its floor (mu = 0.5), frictionless side walls, gravity 1 and the neighbour settings
+  std::vector<std::string> small_pile_box()
+  {
+    return {"neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+            "fix xlo all nscd/wall plane 0 0 0 1 0 0", "fix xhi all nscd/wall plane 6 0 0 -1 0 0",
+            "fix ylo all nscd/wall plane 0 0 0 0 1 0", "fix yhi all nscd/wall plane 0 6 0 0 -1 0",
+            "fix g all gravity 1.0 vector 0 0 -1"};
+  }
+
   // Position, velocity, angular velocity of the atom with this ID (gathered to all ranks).
   std::vector<double> state_of(tagint tag)
   {
@@ -551,18 +572,9 @@ TEST_F(NSCDTest, MovedWallComesBackFromRestart)
 // the last grain stops at step ~2300 (1 rank: ~1800), hence 3000 steps before the window.
 TEST_F(NSCDTest, SmallPileComesToRestOnTheFloor)
 {
-  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
-            "shapes random 8 seed 7 vertices 12 20 size 0.8 1.2 axes 0.8 0.6 radius 0.05",
-            "lattice sc " + num(1.0 / (1.7 * 1.7 * 1.7)), "region sites block 0 2.99 0 2.99 0 2.99",
-            "region box block -0.5 6.5 -0.5 6.5 -1 8 units box", "create_box 1 box",
-            "create_atoms 1 region sites", "displace_atoms all move 1.2 1.2 1.2 units box",
-            "shapes assign all shape random 1 8 11 density 1 orient random 13",
-            "pair_style nscd activation 0.1", "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
-            "timestep 0.005", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
-            "fix xlo all nscd/wall plane 0 0 0 1 0 0", "fix xhi all nscd/wall plane 6 0 0 -1 0 0",
-            "fix ylo all nscd/wall plane 0 0 0 0 1 0", "fix yhi all nscd/wall plane 0 6 0 0 -1 0",
-            "fix g all gravity 1.0 vector 0 0 -1",
-            "fix solver all nscd tolerance 1e-6 max_sweeps 2000",
+  commands(small_pile_grains());
+  commands(small_pile_box());
+  commands({"timestep 0.005", "fix solver all nscd tolerance 1e-6 max_sweeps 2000",
             "compute m all property/atom mass", "compute weight all reduce sum c_m",
             "thermo_style custom step c_weight", "thermo_modify norm no", "run 3000",
             // the per-step floor force jitters with 1e-4 velocity noise: average it
@@ -771,19 +783,9 @@ TEST_F(NSCDTest, AcceleratedMethodsCarryTheStackLikeGaussSeidel)
 // differed by up to 0.3 mean weights while the grains' totals agreed to 1.3e-5.
 TEST_F(NSCDTest, AcceleratedMethodsGiveGaussSeidelsPileForces)
 {
-  const std::vector<std::string> walls = {
-      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
-      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
-      "fix xlo all nscd/wall plane 0 0 0 1 0 0", "fix xhi all nscd/wall plane 6 0 0 -1 0 0",
-      "fix ylo all nscd/wall plane 0 0 0 0 1 0", "fix yhi all nscd/wall plane 0 6 0 0 -1 0",
-      "fix g all gravity 1.0 vector 0 0 -1"};
-  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
-            "shapes random 8 seed 7 vertices 12 20 size 0.8 1.2 axes 0.8 0.6 radius 0.05",
-            "lattice sc " + num(1.0 / (1.7 * 1.7 * 1.7)), "region sites block 0 2.99 0 2.99 0 2.99",
-            "region box block -0.5 6.5 -0.5 6.5 -1 8 units box", "create_box 1 box",
-            "create_atoms 1 region sites", "displace_atoms all move 1.2 1.2 1.2 units box",
-            "shapes assign all shape random 1 8 11 density 1 orient random 13",
-            "pair_style nscd activation 0.1", "pair_coeff * * 0.5", "timestep 0.005"});
+  const std::vector<std::string> walls = small_pile_box();
+  commands(small_pile_grains());
+  run("timestep 0.005");
   commands(walls);
   commands({"fix solver all nscd tolerance 1e-5 max_sweeps 2000", "run 1500",
             "write_restart " + scratch("pile.restart")});
