@@ -29,7 +29,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -44,6 +46,20 @@ enum Diagnostic {
 // Restart files hold ImpulseRecords as raw bytes: their layout is the file format (version 1:
 // the record count, then the records).
 constexpr int kRestartVersion = 1;
+
+// Cell size of the coarse correction (nscd::SolverOptions::coarse_cell) in grain sizes:
+// "no" = off, "yes" = 2 (the size measured best, doc/nscd_solver.md), or a number > 0.
+double coarse_cell_of(const std::string &value, LAMMPS *lmp)
+{
+  if (value == "no") return 0.0;
+  if (value == "yes") return 2.0;
+  char *end = nullptr;
+  const double cell = std::strtod(value.c_str(), &end);
+  if (end == value.c_str() || *end != '\0' || !std::isfinite(cell) || cell <= 0.0)
+    lmp->error->all(FLERR, "fix nscd: coarse '{}' must be no, yes or a cell size > 0 (in grain "
+                    "sizes)", value);
+  return cell;
+}
 static_assert(sizeof(nscd::ImpulseRecord) == 48, "restart record layout changed");
 }    // namespace
 
@@ -58,7 +74,7 @@ struct FixNSCD::Solver {
 
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N]
-                     [overlap_speed V] */
+                     [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
 {
@@ -76,9 +92,12 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
 
   // Defaults (doc/fix_nscd.md): theta = 1 lets no impact sink into an obstacle (with
   // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
-  // is checked every 4 sweeps (it costs about a sweep).
+  // is checked every 4 sweeps (it costs about a sweep); Nesterov momentum needs fewer
+  // sweeps than plain Gauss-Seidel on every measured scene, at no communication cost
+  // (doc/nscd_solver.md, "Acceleration").
   solver->options.theta = 1.0;
   solver->options.check_every = 4;
+  solver->options.acceleration = nscd::Acceleration::nesterov;
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
@@ -100,9 +119,18 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
       else
         error->all(FLERR, "fix nscd: unknown order '{}' (expected as_given, shuffled or "
                    "forward_backward)", order);
+    } else if (key == "method") {
+      const std::string method = value;
+      if (method == "gs") solver->options.acceleration = nscd::Acceleration::none;
+      else if (method == "nesterov") solver->options.acceleration = nscd::Acceleration::nesterov;
+      else if (method == "nncg") solver->options.acceleration = nscd::Acceleration::nncg;
+      else
+        error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov or nncg)", method);
+    } else if (key == "coarse") {
+      solver->options.coarse_cell = coarse_cell_of(value, lmp);
     } else {
       error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
-                 "relaxation, check, order, seed, exchange, warn, overlap_speed)", key);
+                 "relaxation, check, order, seed, exchange, warn, method, coarse, overlap_speed)", key);
     }
   }
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
@@ -468,23 +496,19 @@ void FixNSCD::solve()
     error->one(FLERR, "fix nscd: bad contact problem ({}); grains of the first contact: IDs {} "
                "and {}", e.what(), first.key.tag_i, first.key.tag_j);
   }
-  exchange_velocities();
-  solver->report = nscd::SolveReport();
-  solver->report.terms = global_terms();
-  solver->report.residual = solver->report.terms.residual();
-  while (solver->report.residual > solver->options.tolerance && solver->report.sweeps < solver->options.max_sweeps) {
-    solver->problem.sweep();
-    solver->report.sweeps++;
-    const bool last = solver->report.sweeps == solver->options.max_sweeps;
-    const bool check = last || solver->report.sweeps % solver->options.check_every == 0;
-    if (check || solver->report.sweeps % exchange_every == 0) exchange_velocities();
-    if (!check) continue;    // a residual costs about as much as a sweep
-    solver->report.terms = global_terms();
-    solver->report.residual = solver->report.terms.residual();
-  }
-  solver->report.converged = solver->report.residual <= solver->options.tolerance;
+  // lib/solver's loop, its communication done with LAMMPS' comm (ghost velocities) and
+  // MPI_Allreduce, so every decision (stop, restart, coarse correction) is global.
+  nscd::SolverCommunication communication;
+  communication.exchange = [this](nscd::ContactProblem &) { exchange_velocities(); };
+  communication.sum = [this](double *values, int n) {
+    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world);
+  };
+  communication.max = [this](double *values, int n) {
+    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_MAX, world);
+  };
+  communication.exchange_every = exchange_every;
+  solver->report = nscd::iterate(solver->problem, solver->options, communication);
   if (!std::isfinite(solver->report.residual)) stop_on_non_finite_problem();
-  solver->problem.finish();
 }
 
 /* A residual of inf or NaN: some external force or velocity is not finite or so large that
@@ -546,26 +570,6 @@ void FixNSCD::exchange_velocities()
     }
   }
   solver->problem.mark_synchronised();
-}
-
-nscd::ResidualTerms FixNSCD::global_terms() const
-{
-  const nscd::ResidualTerms mine = solver->problem.residual_terms();
-  double sums[7] = {mine.error_squared, mine.scale_squared, (double) mine.contacts,
-                    (double) mine.active, (double) mine.sticking, (double) mine.sliding,
-                    (double) mine.local_failures};
-  double total[7];
-  MPI_Allreduce(sums, total, 7, MPI_DOUBLE, MPI_SUM, world);
-  nscd::ResidualTerms all;
-  all.error_squared = total[0];
-  all.scale_squared = total[1];
-  all.contacts = (long) total[2];
-  all.active = (long) total[3];
-  all.sticking = (long) total[4];
-  all.sliding = (long) total[5];
-  all.local_failures = (long) total[6];
-  MPI_Allreduce(&mine.max_interpenetration, &all.max_interpenetration, 1, MPI_DOUBLE, MPI_MAX, world);
-  return all;
 }
 
 void FixNSCD::move_grains()

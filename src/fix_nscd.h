@@ -19,7 +19,6 @@ FixStyle(nscd,FixNSCD);
 
 namespace nscd {
 struct Contact;
-struct ResidualTerms;
 struct WarmStartLeftovers;
 }    // namespace nscd
 
@@ -97,7 +96,6 @@ class FixNSCD : public Fix {
   void take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers);
   void solve();
   void exchange_velocities();
-  nscd::ResidualTerms global_terms() const;
   void move_grains();
   void hand_back_forces();
   void tally_virial(int i, int j, const double *point, const double *force);

@@ -135,6 +135,16 @@ void SolverOptions::validate() const
     throw SolverError("solver tolerance " + std::to_string(tolerance) + " must be > 0");
   if (max_sweeps < 1)
     throw SolverError("max_sweeps = " + std::to_string(max_sweeps) + " must be >= 1");
+  if (!(coarse_cell >= 0.0) || !std::isfinite(coarse_cell))
+    throw SolverError("coarse_cell = " + std::to_string(coarse_cell) +
+                      " must be finite and >= 0 (0 = no coarse correction)");
+  if (coarse_every < 1)
+    throw SolverError("coarse_every = " + std::to_string(coarse_every) +
+                      " must be >= 1 (sweeps between coarse corrections)");
+  if (coarse_patience < 1)
+    throw SolverError("coarse_patience = " + std::to_string(coarse_patience) +
+                      " must be >= 1 (sweeps without a new best residual before the coarse "
+                      "correction is dropped)");
   if (check_every < 1)
     throw SolverError("check_every = " + std::to_string(check_every) +
                       " must be >= 1 (1 = residual after every sweep)");
@@ -174,6 +184,9 @@ void ContactProblem::prepare(const SolverOptions &options)
   random_.seed(options.seed);
   sweeps_done_ = 0;
   local_failures_ = 0;
+  sweep_change_ = 0.0;
+  previous_change_ = 0.0;
+  momentum_steps_ = 0;
 
   // Kinematics use the start-of-step velocities (u_n^- enters the active-contact rule),
   // so rows are built before the external impulses are added.
@@ -185,6 +198,7 @@ void ContactProblem::prepare(const SolverOptions &options)
     body.velocity += (body.inv_mass * body.inv_mass_axes).cwiseProduct(body.external_impulse);
     body.angular_velocity += body.inv_inertia * body.external_angular_impulse;
   }
+  build_groups();
   synced_velocity_.resize(bodies.size());
   synced_angular_velocity_.resize(bodies.size());
   mark_synchronised();
@@ -237,6 +251,8 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
   row.normal_only = !row.inert && row.delassus.bottomRows<2>().cwiseAbs().maxCoeff() <=
                                       1e-12 * row.delassus(0, 0);
   row.impulse.setZero();
+  row.step.setZero();
+  row.direction.setZero();
   row.regime = ContactRegime::open;
   if (row.normal_only) {
     const double W_nn = row.delassus(0, 0);
@@ -310,13 +326,16 @@ void ContactProblem::relax(Row &row)
   if (!local.exact) ++local_failures_;
   const double omega = options_.relaxation;
   const Vec3 impulse = omega * local.impulse + (1.0 - omega) * row.impulse;
-  apply_impulse_change(row, impulse - row.impulse);
+  row.step = impulse - row.impulse;
+  apply_impulse_change(row, row.step);
   row.impulse = impulse;
   row.regime = local.regime;
+  sweep_change_ += row.step.squaredNorm();
 }
 
 void ContactProblem::sweep()
 {
+  sweep_change_ = 0.0;
   switch (options_.order) {
   case SweepOrder::shuffled:
     std::shuffle(order_.begin(), order_.end(), random_);
@@ -332,6 +351,61 @@ void ContactProblem::sweep()
     break;
   }
   ++sweeps_done_;
+}
+
+void ContactProblem::accelerate(double global_sweep_change)
+{
+  double beta = 0.0;
+  switch (options_.acceleration) {
+  case Acceleration::none:
+    return;
+  case Acceleration::nesterov:
+    beta = momentum_steps_ > 0 ? (momentum_steps_ - 1.0) / (momentum_steps_ + 2.0) : 0.0;
+    ++momentum_steps_;
+    break;
+  case Acceleration::nncg:
+    // Fletcher-Reeves; a growing sweep change (beta > 1) restarts.
+    beta = previous_change_ > 0.0 ? global_sweep_change / previous_change_ : 0.0;
+    if (!(beta <= 1.0)) beta = 0.0;
+    previous_change_ = global_sweep_change;
+    break;
+  }
+  for (Row &row : rows_) {
+    if (row.inert) continue;
+    if (beta > 0.0) {
+      const Vec3 target = project_on_coulomb_cone(row.impulse + beta * row.direction, row.mu);
+      const Vec3 change = target - row.impulse;
+      apply_impulse_change(row, change);
+      row.impulse = target;
+      row.direction = change + row.step;
+    } else {
+      row.direction = row.step;
+    }
+  }
+}
+
+void ContactProblem::restart_acceleration()
+{
+  momentum_steps_ = 0;
+  previous_change_ = 0.0;
+  for (Row &row : rows_) row.direction.setZero();
+}
+
+void ContactProblem::remember_impulses()
+{
+  remembered_.resize(rows_.size());
+  for (std::size_t c = 0; c < rows_.size(); ++c) remembered_[c] = rows_[c].impulse;
+}
+
+void ContactProblem::restore_remembered_impulses()
+{
+  for (std::size_t c = 0; c < remembered_.size() && c < rows_.size(); ++c) {
+    Row &row = rows_[c];
+    if (row.inert) continue;
+    apply_impulse_change(row, remembered_[c] - row.impulse);
+    row.impulse = remembered_[c];
+  }
+  restart_acceleration();
 }
 
 ResidualTerms ContactProblem::residual_terms() const
@@ -369,26 +443,121 @@ void ContactProblem::finish()
   }
 }
 
+SolveControl::Step SolveControl::at_check(double residual, int sweeps)
+{
+  Step step;
+  const bool coarse = options_.coarse_cell > 0.0 && !coarse_dropped_;
+  if (coarse) {
+    // The residual a window ago (the last check at or before); the window spans at least
+    // two coarse corrections.
+    const int window = std::max(options_.coarse_patience, 2 * options_.coarse_every);
+    double before = -1.0;
+    for (const auto &check : checks_)
+      if (check.first <= sweeps - window) before = check.second;
+    checks_.emplace_back(sweeps, residual);
+    const bool new_best = best_ < 0.0 || residual < best_;
+    if (before >= 0.0 && !(residual <= 0.5 * before) && residual > options_.tolerance) {
+      // Too slow with the coarse correction (stalling, or fighting the sweeps): on without
+      // it, from the best impulses if these are worse.
+      coarse_dropped_ = true;
+      if (!new_best) {
+        step.restore = true;
+        previous_ = -1.0;
+        return step;
+      }
+    } else if (new_best) {
+      best_ = residual;
+      step.remember = true;
+    }
+  }
+  if (residual <= options_.tolerance || sweeps >= options_.max_sweeps) {
+    step.stop = true;
+    return step;
+  }
+  if (options_.acceleration != Acceleration::none && previous_ >= 0.0 && residual > previous_)
+    step.restart = true;
+  previous_ = residual;
+  if (coarse && !coarse_dropped_ &&
+      (last_coarse_ < 0 || sweeps - last_coarse_ >= options_.coarse_every)) {
+    step.coarse = true;
+    last_coarse_ = sweeps;
+    ++coarse_corrections_;
+  }
+  return step;
+}
+
+ResidualTerms reduce(const ResidualTerms &mine, const SolverCommunication &communication)
+{
+  if (!communication.sum) return mine;
+  double sums[7] = {mine.error_squared,          mine.scale_squared,
+                    static_cast<double>(mine.contacts), static_cast<double>(mine.active),
+                    static_cast<double>(mine.sticking), static_cast<double>(mine.sliding),
+                    static_cast<double>(mine.local_failures)};
+  communication.sum(sums, 7);
+  ResidualTerms all;
+  all.error_squared = sums[0];
+  all.scale_squared = sums[1];
+  all.contacts = static_cast<long>(sums[2]);
+  all.active = static_cast<long>(sums[3]);
+  all.sticking = static_cast<long>(sums[4]);
+  all.sliding = static_cast<long>(sums[5]);
+  all.local_failures = static_cast<long>(sums[6]);
+  all.max_interpenetration = mine.max_interpenetration;
+  if (communication.max) communication.max(&all.max_interpenetration, 1);
+  return all;
+}
+
+SolveReport iterate(ContactProblem &problem, const SolverOptions &options,
+                    const SolverCommunication &communication)
+{
+  const auto exchange = [&]() {
+    if (communication.exchange) communication.exchange(problem);
+  };
+  const auto global_change = [&]() {
+    double change = problem.sweep_change();
+    if (communication.sum && options.acceleration == Acceleration::nncg)
+      communication.sum(&change, 1);
+    return change;
+  };
+  const int exchange_every = std::max(1, communication.exchange_every);
+  exchange();
+  SolveControl control(options);
+  SolveReport report;
+  int sweeps = 0;
+  for (;;) {
+    report.terms = reduce(problem.residual_terms(), communication);
+    report.residual = report.terms.residual();
+    const SolveControl::Step step = control.at_check(report.residual, sweeps);
+    if (step.remember) problem.remember_impulses();
+    if (step.restore) {
+      problem.restore_remembered_impulses();
+      exchange();
+      continue;    // check the restored impulses
+    }
+    if (step.stop) break;
+    if (step.restart) problem.restart_acceleration();
+    if (step.coarse) problem.coarse_correction();
+    for (;;) {
+      problem.sweep();
+      ++sweeps;
+      problem.accelerate(global_change());
+      const bool check = sweeps % options.check_every == 0 || sweeps == options.max_sweeps;
+      if (check || sweeps % exchange_every == 0) exchange();
+      if (check) break;
+    }
+  }
+  report.sweeps = sweeps;
+  report.converged = report.residual <= options.tolerance;
+  report.coarse_corrections = control.coarse_corrections();
+  report.coarse_dropped = control.coarse_dropped();
+  problem.finish();
+  return report;
+}
+
 SolveReport solve(ContactProblem &problem, const SolverOptions &options)
 {
   problem.prepare(options);
-  SolveReport report;
-  for (;;) {
-    report.terms = problem.residual_terms();
-    report.residual = report.terms.residual();
-    if (report.residual <= options.tolerance) {
-      report.converged = true;
-      break;
-    }
-    if (problem.sweeps_done() >= options.max_sweeps) break;
-    do {
-      problem.sweep();
-    } while (problem.sweeps_done() % options.check_every != 0 &&
-             problem.sweeps_done() < options.max_sweeps);
-  }
-  report.sweeps = problem.sweeps_done();
-  problem.finish();
-  return report;
+  return iterate(problem, options);
 }
 
 }    // namespace nscd

@@ -1,20 +1,28 @@
 // The NSCD contact problem of one time step and its nonlinear Gauss-Seidel solver
 // (Moreau-Jean time stepping, Signorini condition and exact Coulomb friction, no
-// regularisation). See doc/nscd_solver.md for the equations.
+// regularisation), with optional momentum acceleration and a coarse correction. See
+// doc/nscd_solver.md for the equations and the measured effect of each option.
 //
 // Single rank:   fill bodies and contacts, then solve(problem, options).
-// Under domain decomposition the caller drives the loop itself:
-//   problem.prepare(options);                  // free velocities, Delassus blocks, warm start
-//   exchange();                                // prepare's warm start moved ghosts too
-//   repeat { problem.sweep();                  // one pass over the local contacts
-//            exchange();
-//            terms = problem.residual_terms(); // sums and maxima: reduce across ranks
-//   } until reduced terms.residual() <= tolerance or max_sweeps;
-//   problem.finish();                          // impulses back into contacts
+// Under domain decomposition: prepare() on every rank, then iterate() with a
+// SolverCommunication that exchanges ghost velocities and sums across ranks; iterate()
+// makes every decision from globally reduced numbers, so all ranks take the same ones.
+// Its loop, for drivers that keep their own (doc/nscd_solver.md, "Across ranks"):
+//   problem.prepare(options); exchange();
+//   repeat {
+//     terms = reduce(problem.residual_terms());     // at a check (every check_every sweeps)
+//     decide (SolveControl): stop, remember/restore impulses, coarse correction, restart
+//     problem.sweep();                              // one pass over the local contacts
+//     problem.accelerate(sum(problem.sweep_change()));    // if options.acceleration
+//     exchange();                                   // every exchange_every sweeps and before a check
+//   } until converged or max_sweeps;
+//   problem.finish();                               // impulses back into contacts
 // exchange(): reverse communication adds each ghost's velocity_correction() and
 // angular_velocity_correction() to its owner's velocity, the owner divides the summed
 // correction by its share (see SolverBody::share), forward communication copies the
-// owners' velocities to their ghosts, then every rank calls mark_synchronised().
+// owners' velocities to their ghosts, then every rank calls mark_synchronised(). Every
+// method here changes velocities only through impulse changes of the local contacts, so
+// this one exchange carries all of them.
 // Ghost copies must enter prepare() with the same velocity and external impulses as
 // their owners, so that every rank starts from the same free velocity.
 #pragma once
@@ -23,6 +31,7 @@
 #include "solver/local_coulomb.h"
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -97,6 +106,19 @@ enum class SweepOrder : unsigned char {
   forward_backward,    // alternate forward and backward passes (symmetric Gauss-Seidel)
 };
 
+// Momentum on the Gauss-Seidel sweeps (doc/nscd_solver.md, "Acceleration"). After each
+// sweep every impulse moves on by beta times its change since the last sweep (projected
+// onto its cone), beta >= 0 growing while the iteration goes well:
+enum class Acceleration : unsigned char {
+  none,        // plain nonlinear Gauss-Seidel
+  nesterov,    // beta = (k - 1) / (k + 2), k = sweeps since the last restart; restarts when
+               // the residual grew between two checks. No communication of its own.
+  nncg,        // nonsmooth nonlinear conjugate gradient (Silcowitz, Niebe, Erleben 2010):
+               // Fletcher-Reeves beta = |dP_k|^2 / |dP_k-1|^2 from the sweeps' impulse
+               // changes (one global sum per sweep), restarts when beta > 1 or the
+               // residual grew
+};
+
 struct SolverOptions {
   double dt = 0.0;             // time step, > 0
   double theta = 0.5;          // theta of the theta-method, in (0, 1]
@@ -114,6 +136,17 @@ struct SolverOptions {
   // overlap is kept, not pushed out. The separation speed stays with the grains: it adds
   // kinetic energy (at most m V^2 / 2 per grain and step), so keep V small.
   double overlap_speed = 0.0;
+  Acceleration acceleration = Acceleration::none;
+  // Coarse correction (doc/nscd_solver.md, "Coarse correction"): the contacts of this rank
+  // are grouped into cubic cells of coarse_cell grain sizes (a grain size = twice the mean
+  // lever arm of the contacts); each group's normal impulses are scaled and shifted by
+  // common amounts solved from a small linear system. 0 = off. Applied at a residual
+  // check at most every coarse_every sweeps. It must keep paying: when the residual has
+  // not halved over the last max(coarse_patience, 2 coarse_every) sweeps, the solve goes on
+  // without it, from the impulses of the best residual so far.
+  double coarse_cell = 0.0;
+  int coarse_every = 1;
+  int coarse_patience = 10;
 
   // Throws SolverError naming the bad option.
   void validate() const;
@@ -143,6 +176,8 @@ struct SolveReport {
   double residual = 0.0;
   bool converged = false;
   ResidualTerms terms;
+  int coarse_corrections = 0;    // applied
+  bool coarse_dropped = false;   // it stopped paying (SolverOptions::coarse_patience)
 };
 
 namespace detail {
@@ -165,6 +200,8 @@ struct ContactRow {
   bool inert;             // W_nn = 0 (e.g. both bodies immobile): nothing to solve
   bool normal_only;       // W_nt = W_tt = 0 (locked axes): u_t cannot change
   ContactRegime regime;
+  Vec3 step;              // impulse change of the last sweep (local frame)
+  Vec3 direction;         // momentum: impulse change since the previous sweep
 };
 }    // namespace detail
 
@@ -181,6 +218,34 @@ class ContactProblem {
 
   // One nonlinear Gauss-Seidel pass over all contacts of this problem.
   void sweep();
+
+  // This problem's part of the squared size of the last sweep's impulse change, the sum
+  // over its contacts of |dP|^2 (impulse units, local frame). Only Acceleration::nncg
+  // needs it, summed over ranks.
+  double sweep_change() const { return sweep_change_; }
+  // The momentum step of options.acceleration after a sweep, on this problem's contacts
+  // (the same call on every rank): each impulse moves on by beta times its change since
+  // the previous sweep, projected onto its cone, and the bodies' velocities follow (ghosts
+  // send the change at the next exchange, as after a sweep). global_sweep_change is the
+  // sum over ranks of sweep_change() (read only by nncg). Does nothing without
+  // acceleration.
+  void accelerate(double global_sweep_change = 0.0);
+  // Start the momentum again from zero (when the residual grew, or after a jump of the
+  // impulses that was not a sweep).
+  void restart_acceleration();
+
+  // Coarse correction (SolverOptions::coarse_cell) of this problem's contacts: each group
+  // (cell) of loaded contacts gets two unknowns, a factor on its normal impulses and a
+  // uniform normal increment; they minimise the quadratic energy of the contact problem
+  // restricted to these directions (K y = -r, K = Phi^T W Phi, r = Phi^T u; directions of
+  // self-stress, K y = 0, are left out), then each impulse is projected onto its cone.
+  // Velocities follow like after a sweep. No communication; restarts the momentum.
+  void coarse_correction();
+
+  // A copy of the impulses (of the best residual so far) and the way back to it; the
+  // bodies' velocities follow the change like after a sweep.
+  void remember_impulses();
+  void restore_remembered_impulses();
 
   // Residual contributions of this problem's contacts at the current velocities.
   ResidualTerms residual_terms() const;
@@ -208,17 +273,74 @@ class ContactProblem {
   Vec3 local_velocity(const Row &row) const;
   void apply_impulse_change(const Row &row, const Vec3 &dP);
 
+  void build_groups();
+
   std::vector<Row> rows_;
+  std::vector<int> group_;          // coarse group of each contact
+  int group_count_ = 0;
+  std::vector<Vec3> remembered_;    // remember_impulses()
   std::vector<int> order_;
   std::vector<Vec3> synced_velocity_, synced_angular_velocity_;
   SolverOptions options_;
   std::mt19937_64 random_;
   int sweeps_done_ = 0;
   long local_failures_ = 0;
+  double sweep_change_ = 0.0;
+  double previous_change_ = 0.0;    // nncg: global sweep change of the previous step
+  int momentum_steps_ = 0;          // accelerate() calls since the last restart
 };
 
-// Single-rank driver: prepare, sweep until the residual (checked every
-// options.check_every sweeps) is below the tolerance (or max_sweeps), finish.
+// The decisions of the iteration that depend on the global residual only, so that every
+// rank takes the same ones (iterate() uses it; a driver with its own loop can too).
+class SolveControl {
+ public:
+  explicit SolveControl(const SolverOptions &options) : options_(options) {}
+  struct Step {
+    bool stop = false;              // converged, or max_sweeps reached
+    bool remember = false;          // new best residual: remember_impulses()
+    bool restore = false;           // restore_remembered_impulses(), exchange, check again
+                                    // (the coarse correction stopped paying, best earlier)
+    bool coarse = false;            // coarse_correction() before the next sweep
+    bool restart = false;           // restart_acceleration()
+  };
+  // At a residual check, with the reduced residual after `sweeps` sweeps.
+  Step at_check(double residual, int sweeps);
+  // The residual to report: the best one when the last step restored it.
+  double best_residual() const { return best_; }
+  int coarse_corrections() const { return coarse_corrections_; }
+  bool coarse_dropped() const { return coarse_dropped_; }
+
+ private:
+  SolverOptions options_;
+  double previous_ = -1.0;          // residual of the last check (< 0: none yet)
+  double best_ = -1.0;
+  std::vector<std::pair<int, double>> checks_;    // (sweeps, residual) while coarse is on
+  int last_coarse_ = -1;
+  int coarse_corrections_ = 0;
+  bool coarse_dropped_ = false;
+};
+
+// What iterate() needs from a distributed driver; on one rank everything stays empty.
+struct SolverCommunication {
+  // Ghost velocity exchange (see the top of this file), ending with mark_synchronised().
+  std::function<void(ContactProblem &)> exchange;
+  // In-place global sum (MPI_Allreduce, MPI_SUM) and maximum (MPI_MAX) of n doubles.
+  std::function<void(double *values, int n)> sum;
+  std::function<void(double *values, int n)> max;
+  // Sweeps between exchanges; there is always one before a residual check.
+  int exchange_every = 1;
+};
+
+// ResidualTerms summed (maximum for max_interpenetration) over ranks.
+ResidualTerms reduce(const ResidualTerms &mine, const SolverCommunication &communication);
+
+// The iteration after prepare(): exchange, then sweeps with the options' acceleration and
+// coarse correction, the residual reduced over ranks every options.check_every sweeps
+// (and at max_sweeps), until it is below the tolerance or max_sweeps; then finish().
+SolveReport iterate(ContactProblem &problem, const SolverOptions &options,
+                    const SolverCommunication &communication = {});
+
+// Single-rank driver: prepare(options), then iterate().
 SolveReport solve(ContactProblem &problem, const SolverOptions &options);
 
 }    // namespace nscd
