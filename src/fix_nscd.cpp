@@ -57,7 +57,8 @@ struct FixNSCD::Solver {
 };
 
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
-                     [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N] */
+                     [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N]
+                     [overlap_speed V] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
 {
@@ -90,6 +91,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     else if (key == "exchange") exchange_every = utils::inumeric(FLERR, value, false, lmp);
     else if (key == "check") solver->options.check_every = utils::inumeric(FLERR, value, false, lmp);
     else if (key == "warn") warn_every = utils::inumeric(FLERR, value, false, lmp);
+    else if (key == "overlap_speed") solver->options.overlap_speed = utils::numeric(FLERR, value, false, lmp);
     else if (key == "order") {
       const std::string order = value;
       if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
@@ -100,7 +102,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
                    "forward_backward)", order);
     } else {
       error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
-                 "relaxation, check, order, seed, exchange, warn)", key);
+                 "relaxation, check, order, seed, exchange, warn, overlap_speed)", key);
     }
   }
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
@@ -218,7 +220,8 @@ void FixNSCD::warn_if_grains_overlap()
   if (worst[0] > 0.2 && comm->me == 0)
     error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} of the smaller one's "
                    "bounding radius at the start of the run; contacts keep overlap from growing "
-                   "but do not push it apart. Place the grains apart (e.g. on a coarser lattice)",
+                   "but do not push it apart. Place the grains apart (e.g. on a coarser lattice) "
+                   "or let fix nscd push them apart slowly ('overlap_speed V')",
                    (tagint) worst[1], (tagint) worst[2], worst[0]);
 }
 

@@ -114,8 +114,9 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
                "(valid keywords: {}; each takes one value)", key, value, keywords);
   if (key == "substeps") {
     requested_dt_sp = 0.0;
-    requested_substeps = strcmp(value, "auto") == 0 ? 0 : utils::inumeric(FLERR, value, false, lmp);
-    if (requested_substeps < 0) error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
+    const bool automatic = strcmp(value, "auto") == 0;    // 0 inside: choose
+    requested_substeps = automatic ? 0 : utils::inumeric(FLERR, value, false, lmp);
+    if (!automatic && requested_substeps < 1) error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
     return;
   }
   const auto option = plain.find(key);

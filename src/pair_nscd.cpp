@@ -82,10 +82,11 @@ void PairNSCD::settings(int narg, char **arg)
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
+    // (the text as given in the messages: older LAMMPS parse 1e400 as inf without a word)
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (strcmp(arg[iarg], "activation") == 0) {
       if (!(value >= 0.0) || !std::isfinite(value))
-        error->all(FLERR, "pair_style nscd: activation {} must be finite and >= 0", value);
+        error->all(FLERR, "pair_style nscd: activation {} must be finite and >= 0", arg[iarg + 1]);
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
       if (!(value >= 0.0 && value <= 1.0))
@@ -96,7 +97,7 @@ void PairNSCD::settings(int narg, char **arg)
       activation_fraction = value;
     } else if (strcmp(arg[iarg], "reach") == 0) {
       if (!(value >= 0.0) || !std::isfinite(value))
-        error->all(FLERR, "pair_style nscd: reach {} must be finite and >= 0", value);
+        error->all(FLERR, "pair_style nscd: reach {} must be finite and >= 0", arg[iarg + 1]);
       reach_given = value;
     } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
       if (!(value >= 0.0 && value <= 20.0))

@@ -162,6 +162,10 @@ void Shapes::random(int narg, char **arg)
   } catch (std::exception &e) {
     error->all(FLERR, "shapes random: {}", e.what());
   }
+  // Random grains are named after their seed: a taken name means a seed used before.
+  if (more.size() > 0 && avec->shapes().find(more.name(1)) > 0)
+    error->all(FLERR, "shapes random: seed {} was used before (its shape name '{}' is shape {} "
+               "already); give another seed", seed, more.name(1), avec->shapes().find(more.name(1)));
   const int first = avec->shapes().size() + 1;
   avec->add_shapes(more);
   if (comm->me == 0)

@@ -138,6 +138,9 @@ void SolverOptions::validate() const
   if (check_every < 1)
     throw SolverError("check_every = " + std::to_string(check_every) +
                       " must be >= 1 (1 = residual after every sweep)");
+  if (!(overlap_speed >= 0.0) || !std::isfinite(overlap_speed))
+    throw SolverError("overlap_speed = " + std::to_string(overlap_speed) +
+                      " must be finite and >= 0 (0 = overlap is not pushed out)");
 }
 
 void ResidualTerms::merge(const ResidualTerms &other)
@@ -260,7 +263,8 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
   if (row.gap_start > 0.0)
     row.normal_shift = -row.gap_start / theta_dt;
   else
-    row.normal_shift = contact.restitution * std::max(-u_n_start, 0.0);
+    row.normal_shift = std::max(contact.restitution * std::max(-u_n_start, 0.0),
+                                std::min(-row.gap_start / theta_dt, options_.overlap_speed));
   row.offset[0] -= row.normal_shift;
 }
 

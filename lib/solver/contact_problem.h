@@ -109,6 +109,11 @@ struct SolverOptions {
   // then only every check_every sweeps (and at max_sweeps), so it may do up to
   // check_every - 1 sweeps more than needed. 1 = check after every sweep.
   int check_every = 1;
+  // Overlapping contacts (gap < 0 at the start of the step) separate at up to this normal
+  // speed, enough to remove the overlap within the step if it is small. 0 (the default):
+  // overlap is kept, not pushed out. The separation speed stays with the grains: it adds
+  // kinetic energy (at most m V^2 / 2 per grain and step), so keep V small.
+  double overlap_speed = 0.0;
 
   // Throws SolverError naming the bad option.
   void validate() const;

@@ -79,7 +79,7 @@ TEST_F(BadInputTest, ShapeLibraryProblemsArriveAsErrorsNamingTheValue)
   run("shapes read " + shape_file("cube.shapes", kCube));
   EXPECT_TRUE(has(error_of("shapes read " + scratch("cube.shapes")), "'cube' is already used"));
   run("shapes random 2 seed 9");
-  EXPECT_TRUE(has(error_of("shapes random 2 seed 9"), "seed"));
+  EXPECT_TRUE(has(error_of("shapes random 2 seed 9"), "seed 9 was used before"));
 }
 
 TEST_F(BadInputTest, ShapeNameTakenAfterReadRestartIsRefused)

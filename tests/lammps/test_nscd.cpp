@@ -166,6 +166,68 @@ TEST_F(NSCDTest, StackOfBoxesCarriesTheWeightAboveAtEachLevel)
   }
 }
 
+// Speculative contacts: a cube thrown down at 50 activation distances per step stops on the
+// floor, and another one on a resting cube, without sinking in (gap closed to 1e-6 of its
+// size; restitution 0). With `reach 0` the pair's contact is found only after the top cube
+// has gone into the bottom one: the same check fails.
+TEST_F(NSCDTest, FastGrainsStopAtTheSurface)
+{
+  for (const char *reach : {"7.0", "0"}) {
+    restart_instance();
+    scene();
+    run(std::string("pair_style nscd reach ") + reach);
+    run("pair_coeff * * 0.5");
+    add_cube(3.0, 0.0, 0.5 + 3.0);          // above the floor
+    add_cube(-3.0, 0.0, 0.5);               // resting
+    add_cube(-3.0, 0.0, 1.5 + 3.0);         // above it
+    const double activation = 0.1 * std::sqrt(0.75);    // 10 % of the cube's bounding radius
+    const double speed = 50.0 * activation / 0.001;
+    commands({"shapes assign all shape 1 density 1", "group thrown id 1 3",
+              "velocity thrown set 0 0 " + num(-speed), "run 5"});
+    EXPECT_NEAR(state_of(1)[2], 0.5, 1e-6) << "onto the floor, reach " << reach;
+    EXPECT_NEAR(state_of(1)[5], 0.0, 1e-6);
+    EXPECT_NEAR(state_of(2)[2], 0.5, 1e-6);
+    if (std::string(reach) == "0") {
+      EXPECT_LT(state_of(3)[2], 1.5 - 0.1) << "found late, it sank in";
+      continue;
+    }
+    EXPECT_NEAR(state_of(3)[2], 1.5, 1e-6) << "onto a cube";
+    EXPECT_NEAR(state_of(3)[5], 0.0, 1e-6);
+  }
+}
+
+// Cubes placed overlapping by 0.05 side by side on the floor: kept so by default; with
+// overlap_speed 0.2 pushed apart (neither faster than the cap) until they touch, then
+// stopped by floor friction.
+TEST_F(NSCDTest, OverlapSpeedPushesPlacedOverlapApartAtMostAtItsSpeed)
+{
+  for (const char *speed : {"0", "0.2"}) {
+    restart_instance();
+    scene(0.5, std::string("tolerance 1e-10 max_sweeps 2000 overlap_speed ") + speed);
+    add_cube(-0.475, 0.0, 0.5);
+    add_cube(0.475, 0.0, 0.5);
+    commands({"shapes assign all shape 1 density 1", "run 1"});
+    double fastest = 0.0;
+    for (int k = 0; k < 80; k++) {
+      run("run 10");
+      fastest = std::max({fastest, std::abs(state_of(1)[3]), std::abs(state_of(2)[3])});
+    }
+    const double apart = state_of(2)[0] - state_of(1)[0];
+    if (std::string(speed) == "0") {
+      EXPECT_NEAR(apart, 0.95, 1e-12);
+      EXPECT_LT(fastest, 1e-12);
+      continue;
+    }
+    // How floor friction shares the push between the two is not unique (they part at
+    // about 0.08 and 0.12): the separation speed is what the cap bounds.
+    EXPECT_GE(apart, 1.0 - 1e-9);
+    EXPECT_LT(apart, 1.0 + 0.05);    // friction stops each within v^2 / (2 mu g) <= 0.04
+    EXPECT_LE(fastest, 0.2 + 1e-9);
+    EXPECT_NEAR(state_of(1)[3], 0.0, 1e-9);
+    EXPECT_NEAR(state_of(2)[3], 0.0, 1e-9);
+  }
+}
+
 TEST_F(NSCDTest, PyramidOfBoxesStaysStanding)
 {
   scene();

@@ -143,6 +143,34 @@ TEST(ContactGrains, EdgeOnFaceGivesTwoPoints)
   EXPECT_TRUE(has_point_at(set, Vec3(-1, 0, 1 + r + 0.5 * g)));
 }
 
+// Box i tilted by a about x rests on its lowest edge over a wide box j. Its other bottom
+// edge is 2 sin(a) higher: within the activation distance its two vertices are points too
+// (a grain turning about the edge brings them down within a step), with the face's normal
+// and their own gap; below it, only the edge's two points.
+TEST(ContactGrains, VerticesOverAFaceWithinTheActivationArePointsToo)
+{
+  const double r = 0.1, g = 0.02, a = 10.0 * kPi / 180.0;
+  const auto small = make_box(1, 1, 1, r), wide = make_box(3, 3, 1, r);
+  ContactWorkspace ws;
+  const Pose tilted = place(small, Vec3(0, 0, 1 + 2 * r + g + std::sin(a) + std::cos(a)), rotation_about(Vec3::UnitX(), a));
+  const Pose below = place(wide, Vec3::Zero());
+  ASSERT_EQ(contact_grains(small, tilted, wide, below, 0.05, ws).count, 2);
+  const double raised = g + 2 * std::sin(a);
+  const auto set = contact_grains(small, tilted, wide, below, raised + 0.01, ws);
+  ASSERT_EQ(set.count, 4);
+  for (const auto &p : set) EXPECT_NEAR((p.normal - Vec3::UnitZ()).norm(), 0.0, kTol);
+  // rotating (y, z) = (-1, -1) and (1, -1) about x: the lowest and the raised edge
+  for (double x : {-1.0, 1.0}) {
+    EXPECT_TRUE(has_point_at(set, Vec3(x, std::sin(a) - std::cos(a), 1 + r + 0.5 * g)));
+    EXPECT_TRUE(has_point_at(set, Vec3(x, std::sin(a) + std::cos(a), 1 + r + 0.5 * raised)));
+  }
+  for (const auto &p : set)
+    EXPECT_TRUE(std::abs(p.gap - g) < kTol || std::abs(p.gap - raised) < kTol) << p.gap;
+  // Only pairs meeting on an edge or a corner get them: a face-on-face patch is enough.
+  const Pose flat = place(small, Vec3(0, 0, 1 + 2 * r + g + 1));
+  EXPECT_EQ(contact_grains(small, flat, wide, below, 0.5, ws).count, 4);
+}
+
 // Box i standing on a corner: 1 point under the corner.
 TEST(ContactGrains, VertexOnFaceGivesOnePoint)
 {

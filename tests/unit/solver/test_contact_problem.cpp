@@ -316,6 +316,27 @@ TEST(ContactProblem, RestitutionReversesTheRelativeNormalVelocity)
   EXPECT_NEAR(problem.bodies[1].velocity.x() - problem.bodies[0].velocity.x(), e * 3.0, 1e-14);
 }
 
+// Two spheres at rest overlapping by d: kept as they are by default; with overlap_speed V
+// they separate at min(d / (theta dt), V), momentum conserved; and a small overlap is
+// removed within the step exactly.
+TEST(ContactProblem, OverlapIsPushedOutOnlyWhenAskedAndAtMostAtTheCap)
+{
+  const double d = 0.02;
+  for (const double cap : {0.0, 0.5, 100.0}) {
+    ContactProblem problem = two_sphere_collision(-d, 0.0, 0.0, 0.0);
+    SolverOptions options = tight_options(0.01);
+    options.theta = 1.0;
+    options.overlap_speed = cap;
+    ASSERT_TRUE(solve(problem, options).converged) << cap;
+    const double separation = problem.bodies[1].velocity.x() - problem.bodies[0].velocity.x();
+    EXPECT_NEAR(separation, std::min(d / options.dt, cap), 1e-12) << "cap " << cap;
+    EXPECT_NEAR(momentum_x(problem), 0.0, 1e-14);
+  }
+  SolverOptions bad = tight_options();
+  bad.overlap_speed = -1.0;
+  EXPECT_THROW(bad.validate(), SolverError);
+}
+
 TEST(ContactProblem, ContactClosingWithinTheStepIsCaughtWithoutPenetration)
 {
   // theta = 1: the approach is slowed to exactly close the gap at the end of the step.
