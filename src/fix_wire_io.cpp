@@ -1,0 +1,242 @@
+/* fix wire's input and output: LAMMPS' communication of wire nodes and grains (forward,
+   reverse, with the periodic shift of positions), the per-atom Gear states (grow, copy,
+   exchange, restart), the global restart block of contact memories, the timing report
+   after a run and the contact rows of compute wire/contacts. */
+
+#include "fix_wire.h"
+#include "fix_wire_lib.h"
+
+#include "atom.h"
+#include "atom_vec_spheropolyhedron.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "nscd_gather.h"
+#include "timer.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using nscd::Vec3;
+namespace wire = nscd::wire;
+
+/* ---------------------------------------------------------------------- comm */
+
+/* counted: the subcycle's (timed by lib/wire and counted here), else once per step. */
+void FixWire::communicate(Comm mode, bool reverse, bool counted)
+{
+  const double t0 = platform::walltime();
+  comm_mode = mode;
+  counting_comm = counted;
+  if (reverse) comm->reverse_comm(this, mode == Comm::grain_force ? 6 : 3);
+  else comm->forward_comm(this, mode == Comm::node_position ? 3 : 6);
+  counting_comm = false;
+  if (!counted) timing[T_COMM_STEP] += platform::walltime() - t0;
+}
+
+/* What the current mode sends of atom i: up to two vectors of 3 doubles, none for atoms of
+   the other kind. Each mode sends wire nodes only or grains only: both sides know from the
+   shape which atoms those are. A node's first vector is its position (periodic shift). */
+int FixWire::comm_fields(int i, double *field[2])
+{
+  const bool grain = avec->shape[i] != 0;
+  const int node = grain ? -1 : node_of_atom[i];
+  wire::WireNodeSet &nodes = lib->step.nodes;
+  switch (comm_mode) {
+    case Comm::node_state: field[0] = nodes.positions[node].data(), field[1] = nodes.velocities[node].data(); return grain ? 0 : 2;
+    case Comm::node_position: field[0] = atom->x[i]; return grain ? 0 : 1;
+    case Comm::node_force: field[0] = nodes.forces[node].data(); return grain ? 0 : 1;
+    case Comm::grain_velocity: field[0] = atom->v[i], field[1] = avec->omega[i]; return grain ? 2 : 0;
+    case Comm::grain_force: field[0] = &grain_force_buffer[6 * (size_t) i], field[1] = field[0] + 3; return grain ? 2 : 0;
+  }
+  return 0;
+}
+
+int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  double shift[3] = {0.0, 0.0, 0.0};
+  if (pbc_flag && comm_mode != Comm::grain_velocity) {
+    shift[0] = pbc[0] * domain->xprd + (domain->triclinic ? pbc[5] * domain->xy + pbc[4] * domain->xz : 0.0);
+    shift[1] = pbc[1] * domain->yprd + (domain->triclinic ? pbc[3] * domain->yz : 0.0);
+    shift[2] = pbc[2] * domain->zprd;
+  }
+  int m = 0;
+  double *field[2];
+  for (int k = 0; k < n; k++)
+    for (int f = 0, fields = comm_fields(list[k], field); f < fields; f++)
+      for (int d = 0; d < 3; d++) buf[m++] = field[f][d] + (f == 0 ? shift[d] : 0.0);
+  if (counting_comm) timing[T_SENT] += m, timing[T_SENT_ALL_ATOMS] += 6.0 * n;
+  return m;
+}
+
+void FixWire::unpack_forward_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  double *field[2];
+  for (int i = first; i < first + n; i++)
+    for (int f = 0, fields = comm_fields(i, field); f < fields; f++)
+      for (int d = 0; d < 3; d++) field[f][d] = buf[m++];
+}
+
+int FixWire::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  double *field[2];
+  for (int i = first; i < first + n; i++)
+    for (int f = 0, fields = comm_fields(i, field); f < fields; f++)
+      for (int d = 0; d < 3; d++) buf[m++] = field[f][d];
+  if (counting_comm) timing[T_SENT] += m, timing[T_SENT_ALL_ATOMS] += 3.0 * n;
+  return m;
+}
+
+void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  double *field[2];
+  for (int k = 0; k < n; k++)
+    for (int f = 0, fields = comm_fields(list[k], field); f < fields; f++)
+      for (int d = 0; d < 3; d++) field[f][d] += buf[m++];
+}
+
+/* ---------------------------------------------------------------------- per-atom state */
+
+void FixWire::grow_arrays(int nmax) { memory->grow(gear, nmax, kGearColumns, "wire:gear"); }
+void FixWire::copy_arrays(int i, int j, int /*delflag*/) { std::copy(gear[i], gear[i] + kGearColumns, gear[j]); }
+void FixWire::set_arrays(int i) { std::fill(gear[i], gear[i] + kGearColumns, 0.0); }
+int FixWire::size_restart(int /*nlocal*/) { return kGearColumns + 1; }
+int FixWire::maxsize_restart() { return kGearColumns + 1; }
+
+int FixWire::pack_exchange(int i, double *buf)
+{
+  std::copy(gear[i], gear[i] + kGearColumns, buf);
+  return kGearColumns;
+}
+
+int FixWire::unpack_exchange(int nlocal, double *buf)
+{
+  std::copy(buf, buf + kGearColumns, gear[nlocal]);
+  return kGearColumns;
+}
+
+int FixWire::pack_restart(int i, double *buf)
+{
+  buf[0] = kGearColumns + 1;    // LAMMPS convention: the count includes this slot
+  std::copy(gear[i], gear[i] + kGearColumns, buf + 1);
+  return kGearColumns + 1;
+}
+
+void FixWire::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  std::copy(&extra[nlocal][m + 1], &extra[nlocal][m + 1] + kGearColumns, gear[nlocal]);
+}
+
+/* Global restart: a version number, the step of the stored Gear states and the contact
+   memories of all ranks (wire::StoredContact, plain numbers). */
+void FixWire::write_restart(FILE *fp)
+{
+  std::vector<wire::StoredContact> mine;
+  // Read from a restart and no step since: every rank holds them all; write them once.
+  if (!memories_on_every_rank || comm->me == 0) mine = lib->contacts ? lib->contacts->memories() : lib->restored;
+  const std::vector<wire::StoredContact> all = gather_records(mine, world, false);
+  if (comm->me != 0) return;
+  const double header[3] = {kRestartVersion, state_dt, (double) all.size()};
+  const int size = (int) (sizeof(header) + all.size() * sizeof(wire::StoredContact));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(header, sizeof(double), 3, fp);
+  fwrite(all.data(), sizeof(wire::StoredContact), all.size(), fp);
+}
+
+/* read_restart hands every rank the whole block; hand_over_memories() keeps the own ones. */
+void FixWire::restart(char *buf)
+{
+  double header[3];
+  std::memcpy(header, buf, sizeof(double));
+  if (header[0] >= 0.0) {    // an older block without version: (dt, count, records)
+    state_dt = header[0];
+    if (comm->me == 0)
+      error->warning(FLERR, "fix wire: restart file of an older fix wire: its contacts' friction springs "
+                     "are not read (they start again from zero)");
+    return;
+  }
+  std::memcpy(header, buf, sizeof(header));
+  state_dt = header[1];
+  lib->restored.resize((size_t) header[2]);
+  std::memcpy(lib->restored.data(), buf + sizeof(header), lib->restored.size() * sizeof(wire::StoredContact));
+  memories_on_every_rank = true;
+}
+
+/* ---------------------------------------------------------------------- timing report */
+
+/* fix wire's share of the run, printed after it: time per node per substep, its split over
+   contacts, elastic forces, integration and communication, and the bytes sent per substep. */
+void FixWire::post_run()
+{
+  if (substeps_run == 0) return;
+  const wire::StepTiming &t = lib->timing;
+  timing[T_CONTACTS] = t.contacts;
+  timing[T_ELASTIC] = t.elastic;
+  timing[T_INTEGRATION] = t.integration;
+  timing[T_COMM] = t.exchange + timing[T_COMM_STEP];
+  timing[T_NODE_SUBSTEPS] = t.node_substeps;
+  std::array<double, N_TIMING> sum;
+  MPI_Allreduce(timing.data(), sum.data(), N_TIMING, MPI_DOUBLE, MPI_SUM, world);
+  double slowest;
+  MPI_Allreduce(&timing[T_TOTAL], &slowest, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (comm->me != 0) return;
+  const double loop = timer->get_wall(Timer::TOTAL), total = sum[T_TOTAL], steps = (double) substeps_run;
+  const double per = sum[T_NODE_SUBSTEPS] > 0.0 ? 1e9 / sum[T_NODE_SUBSTEPS] : 0.0;
+  auto share = [&](double x) { return total > 0.0 ? 100.0 * x / total : 0.0; };
+  std::string text = fmt::format(
+      "fix wire {0}: {1:.4g} s of {2:.4g} s loop time ({3:.3g} %, slowest rank), {4} substeps, {5:.0f} nodes\n"
+      "fix wire {0}: {6:.4g} ns per node per substep (time summed over ranks; cpu {7:.4g} ns)\n"
+      "fix wire {0}: contacts {8:.3g} %, elastic forces {9:.3g} %, integration {10:.3g} %, communication "
+      "{11:.3g} %, step setup and hand-over {12:.3g} %\n"
+      "fix wire {0}: communication per substep (all ranks): {13:.0f} bytes of wire nodes; {14:.0f} bytes "
+      "for 6 + 3 doubles per ghost atom of any kind\n",
+      id, slowest, loop, loop > 0.0 ? 100.0 * slowest / loop : 0.0, substeps_run, sum[T_NODE_SUBSTEPS] / steps,
+      total * per, sum[T_CPU] * per, share(sum[T_CONTACTS]), share(sum[T_ELASTIC]), share(sum[T_INTEGRATION]),
+      share(sum[T_COMM]), share(total - sum[T_CONTACTS] - sum[T_ELASTIC] - sum[T_INTEGRATION] - sum[T_COMM]),
+      8.0 * sum[T_SENT] / steps, 8.0 * sum[T_SENT_ALL_ATOMS] / steps);
+  if (lib->contacts) {
+    const wire::ContactModel &c = *lib->contacts;
+    text += fmt::format("fix wire {}: rank 0: {} contact list builds, {} candidate pairs, {:.4g} % of {} "
+                        "element-grain evaluations from the tracked feature\n", id, c.rebuilds() - rebuilds_at_start,
+                        c.candidates(), 100.0 * c.grain_evaluations_from_hint() / std::max(1LL, c.grain_evaluations()),
+                        c.grain_evaluations());
+  }
+  utils::logmesg(lmp, text);
+}
+
+/* ---------------------------------------------------------------------- output */
+
+/* Called by the compute's init(), which LAMMPS may run before or after this fix's. */
+void FixWire::record_contacts()
+{
+  contacts_recorded = true;
+  if (lib->contacts) lib->contacts->record_contacts(true);
+}
+
+/* id1 id2 other kind px py pz nx ny nz fn ftx fty ftz overlap status; a boundary is -k,
+   k counting the wall and plate fixes this fix sees in the order they were defined. */
+std::vector<double> FixWire::contact_rows() const
+{
+  std::vector<double> rows;
+  if (!lib->contacts) return rows;
+  for (const wire::ContactRecord &c : lib->contacts->contact_records()) {
+    double other = (double) c.key[2];
+    for (size_t b = 0; b < lib->boundaries.size() && c.kind == wire::ContactRecord::wire_boundary; b++)
+      if (lib->boundaries[b].link.id == c.key[2]) other = -(double) (b + 1);
+    const double row[kContactColumns] = {
+        (double) c.key[0], (double) c.key[1], other, (double) c.kind, c.point.x(), c.point.y(), c.point.z(),
+        c.normal.x(), c.normal.y(), c.normal.z(), c.normal_force, c.tangential_force.x(), c.tangential_force.y(),
+        c.tangential_force.z(), c.overlap, c.sliding ? 1.0 : 0.0};
+    rows.insert(rows.end(), row, row + kContactColumns);
+  }
+  return rows;
+}

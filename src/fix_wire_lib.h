@@ -1,0 +1,52 @@
+/* fix wire's private state (not a style header): the lib/wire objects behind FixWire's
+   pointer, shared by fix_wire.cpp (setup, the step) and fix_wire_io.cpp
+   (communication, per-atom arrays, restart, reports). */
+#ifndef LMP_FIX_WIRE_LIB_H
+#define LMP_FIX_WIRE_LIB_H
+
+#include "fix_wire.h"
+#include "nscd_boundary.h"
+#include "wire/contact_model.h"
+#include "wire/wire_step.h"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+constexpr double kRestartVersion = -2.0;    // first number of the global restart block
+
+// A wall or the plate as the wire's contact model sees it.
+struct BoundaryView final : nscd::wire::NodeBoundary {
+  NSCDBoundary *boundary = nullptr;
+  int groupbit = 0;    // the nodes it touches: those of its fix group
+  nscd::wire::BoundaryLink link{};
+  nscd::ContactPoint touch_sphere(const nscd::Vec3 &c, double r, double tau) const override
+  {
+    return boundary->touch_sphere(c, r, tau);
+  }
+  nscd::Vec3 surface_velocity() const override { return boundary->surface_velocity(); }
+};
+
+struct FixWire::Lib : nscd::wire::Exchange {
+  FixWire *fix;
+  nscd::wire::SoftContactLaw law;
+  std::unique_ptr<nscd::wire::ContactModel> contacts;
+  nscd::wire::SubcyclePlan plan;
+  std::array<double, 6> corrector = nscd::wire::gear5_corrector_coefficients(nscd::wire::GearCorrector::ThreeSixteenths);
+  nscd::wire::WireStep step;    // owned nodes, then their ghost copies; this rank's elements and joints
+  nscd::wire::StepTiming timing;
+  std::vector<BoundaryView> boundaries;
+  std::vector<nscd::Vec3> step_start;
+  std::vector<nscd::wire::StoredContact> restored;    // from a restart file, for the contact model
+  explicit Lib(FixWire *f) : fix(f) {}
+  // The subcycle's communication, wire nodes only: positions and velocities to the ghost
+  // copies, their forces back to the owners.
+  void share_copies(nscd::wire::WireNodeSet &) override { fix->communicate(Comm::node_state, false, true); }
+  void return_copy_forces(nscd::wire::WireNodeSet &) override { fix->communicate(Comm::node_force, true, true); }
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
