@@ -9,13 +9,16 @@ Fails (exit 1, naming the check) unless, in both runs:
   * no grain was ever deeper than r_w / 2 in another grain or a wall (thermo f_nscd[3]):
     new layers are created clear of the deposit and the solver keeps them apart;
   * the seated plate, at rest on the column under its own weight M g, feels M g from the
-    column to 5 % (its equation of motion with zero acceleration);
-  * while loading, the plate force rises above M g (the load reaches the grains);
+    column to 5 % (its equation of motion with zero acceleration; the deck seats it until
+    slower than 1e-3 and within 1 %, so this fails when it never comes to rest);
+  * under the first load (the column is rigid: the plate stays at rest) the plate force is
+    load + M g to 2 %;
 and with the wire:
   * the wire carries tension after the walls are gone (stretch energy > 0);
   * the column keeps at least 90 % of its grains within the loop radius and of its height
-    through the wall removal;
-  * it keeps at least as many grains as the column without wire.
+    through the wall removal.
+Two layers are too low to collapse without wire (both keep all their grains): the
+collapse of the control is shown at 5 layers in examples/column/README.md, not here.
 """
 
 import os
@@ -51,19 +54,24 @@ def phase_lines(path):
 def check_run(path, label):
     done, seated = phase_lines(path)
     check(sorted(done) == [1, 2, 3, 4, 5], f"{label}: phases done {sorted(done)}, expected 1..5")
-    table = logs.thermo_columns(path, ["Step", "v_phase", "f_nscd[3]", "v_plate_force"])
+    table = logs.thermo_columns(path, ["Step", "v_phase", "f_nscd[3]"])
     deepest = table[:, 2].max()
     check(deepest < R_W / 2, f"{label}: largest interpenetration {deepest:.3g} >= r_w/2 = {R_W / 2}")
     weight = PLATE_MASS * GRAVITY
     seated_force = numbers_after(seated, "force")
     check(abs(seated_force / weight - 1) < 0.05,
           f"{label}: seated plate feels {seated_force:.4g}, its weight is {weight} (5 % allowed)")
-    loading = table[table[:, 1] == 5]
-    check(len(loading) > 0 and loading[:, 3].max() > 1.05 * weight,
-          f"{label}: plate force under load never above 1.05 x its weight "
-          f"(largest {loading[:, 3].max() if len(loading) else 'none'})")
-    print(f"{label}: largest interpenetration {deepest:.3g}, seated plate force {seated_force:.4g} "
-          f"(weight {weight}), largest plate force under load {loading[:, 3].max():.4g}")
+    load = logs.thermo_columns(path, ["v_phase", "v_plate_force", "v_plate_load"])
+    load = load[(load[:, 0] == 5) & (load[:, 2] > 0)]
+    check(len(load) > 0, f"{label}: no thermo row under load")
+    if len(load):
+        first = load[0]
+        error = abs(first[1] / (first[2] + weight) - 1)
+        check(error < 0.02, f"{label}: first row under load: plate force {first[1]:.4g}, load + weight "
+                            f"{first[2] + weight:.4g} (2 % allowed)")
+        print(f"{label}: largest interpenetration {deepest:.3g}, seated plate force {seated_force:.4g} "
+              f"(weight {weight}), under load {first[2]:.4g}: plate force {first[1]:.4g} (relative error "
+              f"{error:.2g} from load + weight)")
     return done
 
 
@@ -88,7 +96,6 @@ def main():
         print(f"wall removal, no wire: height {bare[0]:.3f} -> {bare[1]:.3f}, retained {bare[2]:.3f} -> {bare[3]:.3f}")
         check(wire[3] >= 0.9 * wire[2], f"wire: retained fraction {wire[2]:.3f} -> {wire[3]:.3f} (< 90 % kept)")
         check(wire[1] >= 0.9 * wire[0], f"wire: height {wire[0]:.3f} -> {wire[1]:.3f} (< 90 % kept)")
-        check(wire[3] >= bare[3], f"retained fraction with wire {wire[3]:.3f} < without {bare[3]:.3f}")
     else:
         failures.append("no 'phase 3 done' line with heights and retained fractions")
     stretch = numbers_after(wire_done.get(4, ""), "wire stretch energy")
