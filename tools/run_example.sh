@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds LAMMPS with the package (installing what is missing) and runs an example.
-#   tools/run_example.sh                    the papers' column, small (see below), ~5 min on 2 cores
+#   tools/run_example.sh                    the papers' column, small (see below): ~6 min CPU
 #   tools/run_example.sh column [ARGS...]   the same; ARGS (e.g. -var layers 25) replace the small size
 #   tools/run_example.sh NAME [ARGS...]     examples/NAME/in.NAME, ARGS passed to lmp
-# The small column: 5 layers of random grains, each with a double wire loop of radius 2,
+# The small column: 5 layers of random grains (lattice sites inside the loop), each with a
+# double wire loop of radius 2.5,
 # through all phases of examples/column/in.column (deposit, relax, wall removal, relax,
 # plate loading to failure), then the same without wire (the control). Outputs go to
 # examples/column/run/ (column.* with the wire, nowire.* without); the phase tables are
@@ -27,8 +28,9 @@ if [ "$example" != column ]; then
 fi
 
 # the small column (examples/column/README.md: "Small size" gives its measured numbers)
-small=(-var layers 5 -var R 2 -var cells 2 -var element 0.3 -var layer_steps 500 -var wire_steps 150
-       -var relax_chunk 250 -var wall_speed 0.2 -var wall_travel 0.8 -var load_rate 20 -var load_max 20)
+small=(-var layers 5 -var R 2.5 -var window cylinder -var cells 2 -var element 0.3 -var layer_steps 500
+       -var wire_steps 150 -var relax_chunk 250 -var wall_speed 0.2 -var wall_travel 0.8 -var load_rate 20
+       -var load_max 20)
 [ $# -gt 0 ] && small=("$@")
 out="$here/examples/column/run"
 mkdir -p "$out"

@@ -12,8 +12,8 @@ set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 lmp=${LMP:-$here/../../build/lmp}
 read -r -a launch <<< "${LAUNCH:-}"
-read -r -a size <<< "${SIZE:--var layers 3 -var R 2 -var cells 2 -var element 0.3 -var layer_steps 400 -var wire_steps 100 -var relax_chunk 250 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.6 -var seat_steps 100 -var load_chunk 100 -var load_max 20 -var load_rate 20 -var dump_every 100000}"
-mu_pw=(${MU_PW:-0.2 0.8}); k_elo=(${K_ELO:-1000 10000}); mu_pp=(${MU_PP:-0.3 0.8})
+read -r -a size <<< "${SIZE:--var layers 3 -var R 2.5 -var window cylinder -var cells 2 -var element 0.3 -var layer_steps 400 -var wire_steps 100 -var relax_chunk 250 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.6 -var seat_steps 100 -var load_chunk 100 -var load_max 20 -var load_rate 20 -var dump_every 100000}"
+mu_pw=(${MU_PW:-0.2 0.8}); k_elo=(${K_ELO:-1000 10000}); mu_pp=(${MU_PP:-0.3 0.8})    # around 0.5, 5000, 0.5
 out=${OUT:-$PWD/study}
 mkdir -p "$out"
 cd "$out"
