@@ -41,6 +41,7 @@ for run in "${runs[@]}"; do
   f_before=$(field "$log" '^phase 3 done:.*retained fraction [^ ]+ \(before ([^)]+)\).*')
   stretch=$(field "$log" '^phase 4 done:.*wire stretch energy ([^,]+),.*')
   load=$(field "$log" '^phase 5 done: load ([^,]+),.*')
+  grep -q "^phase 5: no failure" "$log" && load=">$load (no failure)"
   peak=$(field "$log" '^phase 5 done:.*peak of the checks ([^)]+)\).*')
   [ -n "$value" ] || { param=defaults; value=-; }
   echo "$param,$value,$h_before,$h_after,$f_before,$f_after,$stretch,$load,$peak,$(( SECONDS - t0 ))" >> study.csv
@@ -54,7 +55,7 @@ def g(x, fmt="{:.3f}"):
     try:
         return fmt.format(float(x))
     except ValueError:
-        return x or "-"
+        return x or "-"    # e.g. ">200 (no failure)"
 print("| parameter | value | height before -> after walls | retained before -> after | kept (after/before) | stretch energy at rest | load at failure | peak plate force | wall s |")
 print("|---|---|---|---|---|---|---|---|---|")
 for r in rows:
