@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Parameter study of the wire column (the papers' Ref. [12] question: what keeps it up?):
+# one parameter at a time around the deck's defaults, a small column each, through all
+# phases of in.column. Writes study/study.csv and study/study.md (height and retained
+# fraction before/after the wall removal, wire stretch energy at rest, plate force at failure).
+#
+#   examples/column/study.sh                       # from anywhere; LMP=path/to/lmp to choose
+#   SIZE="-var layers 5 -var R 2 -var cells 2" examples/column/study.sh    # another size
+#   MU_PW="0.2 0.8" K_ELO="1000 10000" MU_PP="0.3 0.8" examples/column/study.sh
+#   LAUNCH="mpiexec -np 2" examples/column/study.sh
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+lmp=${LMP:-$here/../../build/lmp}
+read -r -a launch <<< "${LAUNCH:-}"
+read -r -a size <<< "${SIZE:--var layers 3 -var R 2.5 -var window cylinder -var cells 2 -var element 0.3 -var layer_steps 400 -var wire_steps 100 -var relax_chunk 250 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.6 -var seat_steps 100 -var load_chunk 100 -var load_max 20 -var load_rate 20 -var dump_every 100000}"
+mu_pw=(${MU_PW:-0.2 0.8}); k_elo=(${K_ELO:-1000 10000}); mu_pp=(${MU_PP:-0.3 0.8})    # around 0.5, 5000, 0.5
+out=${OUT:-$PWD/study}
+mkdir -p "$out"
+cd "$out"
+
+runs=("base:")
+for v in "${mu_pw[@]}"; do runs+=("mu_pw:$v"); done
+for v in "${k_elo[@]}"; do runs+=("k_elo:$v"); done
+for v in "${mu_pp[@]}"; do runs+=("mu_pp:$v"); done
+
+field() {    # FILE REGEX: the first group of REGEX in FILE
+  sed -nE "s/$2/\1/p" "$1" | head -n 1
+}
+echo "parameter,value,height_before,height_after,retained_before,retained_after,stretch_energy_at_rest,failure_load,peak_plate_force,wall_s" > study.csv
+for run in "${runs[@]}"; do
+  param=${run%%:*} value=${run#*:}
+  name=$param${value:+_$value}
+  extra=()
+  [ -n "$value" ] && extra=(-var "$param" "$value")
+  t0=$SECONDS
+  "${launch[@]}" "$lmp" -in "$here/in.column" -log "log.$name" -var name "$name" "${size[@]}" "${extra[@]}" > "screen.$name.txt"
+  log=log.$name
+  h_after=$(field "$log" '^phase 3 done: height ([^ ]+) \(before.*')
+  h_before=$(field "$log" '^phase 3 done: height [^ ]+ \(before ([^)]+)\).*')
+  f_after=$(field "$log" '^phase 3 done:.*retained fraction ([^ ]+) \(before.*')
+  f_before=$(field "$log" '^phase 3 done:.*retained fraction [^ ]+ \(before ([^)]+)\).*')
+  stretch=$(field "$log" '^phase 4 done:.*wire stretch energy ([^,]+),.*')
+  load=$(field "$log" '^phase 5 done: load ([^,]+),.*')
+  grep -q "^phase 5: no failure" "$log" && load=">$load (no failure)"
+  peak=$(field "$log" '^phase 5 done:.*peak of the checks ([^)]+)\).*')
+  [ -n "$value" ] || { param=defaults; value=-; }
+  echo "$param,$value,$h_before,$h_after,$f_before,$f_after,$stretch,$load,$peak,$(( SECONDS - t0 ))" >> study.csv
+  echo "study: $name done in $(( SECONDS - t0 )) s"
+done
+
+/usr/bin/python3 - study.csv > study.md <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+def g(x, fmt="{:.3f}"):
+    try:
+        return fmt.format(float(x))
+    except ValueError:
+        return x or "-"    # e.g. ">200 (no failure)"
+print("| parameter | value | height before -> after walls | retained before -> after | kept (after/before) | stretch energy at rest | load at failure | peak plate force | wall s |")
+print("|---|---|---|---|---|---|---|---|---|")
+for r in rows:
+    try:
+        kept = "{:.2f}".format(float(r["retained_after"]) / float(r["retained_before"]))
+    except (ValueError, ZeroDivisionError):
+        kept = "-"
+    print(f"| {r['parameter']} | {r['value']} | {g(r['height_before'])} -> {g(r['height_after'])} | "
+          f"{g(r['retained_before'])} -> {g(r['retained_after'])} | {kept} | {g(r['stretch_energy_at_rest'], '{:.3g}')} | "
+          f"{g(r['failure_load'], '{:.1f}')} | {g(r['peak_plate_force'], '{:.1f}')} | {r['wall_s']} |")
+EOF
+cat study.md
+echo "study: tables in $out/study.csv and $out/study.md"

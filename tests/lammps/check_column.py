@@ -1,0 +1,110 @@
+#!/usr/bin/python3
+"""Checks of the 2-layer column smoke test (tests/lammps/run_example_check.sh column):
+the logs of examples/column/in.column with the wire (WIRE_LOG) and without (BARE_LOG).
+
+    check_column.py WIRE_LOG BARE_LOG
+
+Fails (exit 1, naming the check) unless, in both runs:
+  * every phase ran (the deck's "phase N done" lines, N = 1..5);
+  * no grain was ever deeper than r_w / 2 in another grain or a wall (thermo f_nscd[3]):
+    new layers are created clear of the deposit and the solver keeps them apart;
+  * the seated plate, at rest on the column under its own weight M g, feels M g from the
+    column to 5 % (its equation of motion with zero acceleration; the deck seats it until
+    slower than 1e-3 and within 1 %, so this fails when it never comes to rest);
+  * under the first load (the column is rigid: the plate stays at rest) the plate force is
+    load + M g to 2 %;
+and with the wire:
+  * the wire carries tension after the walls are gone (stretch energy > 0);
+  * the column keeps at least 90 % of its grains within the loop radius and of its height
+    through the wall removal.
+Two layers are too low to collapse without wire (both keep all their grains): the
+collapse of the control is shown at 5 layers in examples/column/README.md, not here.
+"""
+
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from nscd_analysis import logs  # noqa: E402
+
+PLATE_MASS, GRAVITY, R_W = 10.0, 1.0, 0.05
+failures = []
+
+
+def check(ok, message):
+    if not ok:
+        failures.append(message)
+
+
+def numbers_after(text, label):
+    """The number following 'label' in text."""
+    m = re.search(re.escape(label) + r"\s*([-+0-9.eE]+)", text)
+    return float(m.group(1)) if m else float("nan")
+
+
+def phase_lines(path):
+    with open(path) as f:
+        text = f.read()
+    done = {int(m.group(1)): m.group(0) for m in re.finditer(r"^phase (\d) done:.*$", text, re.M)}
+    seated = re.search(r"^phase 5: plate seated.*$", text, re.M)
+    return done, seated.group(0) if seated else ""
+
+
+def check_run(path, label):
+    done, seated = phase_lines(path)
+    check(sorted(done) == [1, 2, 3, 4, 5], f"{label}: phases done {sorted(done)}, expected 1..5")
+    table = logs.thermo_columns(path, ["Step", "v_phase", "f_nscd[3]"])
+    deepest = table[:, 2].max()
+    check(deepest < R_W / 2, f"{label}: largest interpenetration {deepest:.3g} >= r_w/2 = {R_W / 2}")
+    weight = PLATE_MASS * GRAVITY
+    seated_force = numbers_after(seated, "force")
+    check(abs(seated_force / weight - 1) < 0.05,
+          f"{label}: seated plate feels {seated_force:.4g}, its weight is {weight} (5 % allowed)")
+    load = logs.thermo_columns(path, ["v_phase", "v_plate_force", "v_plate_load"])
+    load = load[(load[:, 0] == 5) & (load[:, 2] > 0)]
+    check(len(load) > 0, f"{label}: no thermo row under load")
+    if len(load):
+        first = load[0]
+        error = abs(first[1] / (first[2] + weight) - 1)
+        check(error < 0.02, f"{label}: first row under load: plate force {first[1]:.4g}, load + weight "
+                            f"{first[2] + weight:.4g} (2 % allowed)")
+        print(f"{label}: largest interpenetration {deepest:.3g}, seated plate force {seated_force:.4g} "
+              f"(weight {weight}), under load {first[2]:.4g}: plate force {first[1]:.4g} (relative error "
+              f"{error:.2g} from load + weight)")
+    return done
+
+
+def walls(done):
+    """(height before, after; retained fraction before, after) from 'phase 3 done'."""
+    line = done.get(3, "")
+    h = re.search(r"height (\S+) \(before (\S+)\)", line)
+    f = re.search(r"retained fraction (\S+) \(before (\S+)\)", line)
+    if not (h and f):
+        return None
+    return float(h.group(2)), float(h.group(1)), float(f.group(2)), float(f.group(1))
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    wire_done = check_run(sys.argv[1], "wire")
+    bare_done = check_run(sys.argv[2], "no wire")
+    wire, bare = walls(wire_done), walls(bare_done)
+    if wire and bare:
+        print(f"wall removal, wire: height {wire[0]:.3f} -> {wire[1]:.3f}, retained {wire[2]:.3f} -> {wire[3]:.3f}")
+        print(f"wall removal, no wire: height {bare[0]:.3f} -> {bare[1]:.3f}, retained {bare[2]:.3f} -> {bare[3]:.3f}")
+        check(wire[3] >= 0.9 * wire[2], f"wire: retained fraction {wire[2]:.3f} -> {wire[3]:.3f} (< 90 % kept)")
+        check(wire[1] >= 0.9 * wire[0], f"wire: height {wire[0]:.3f} -> {wire[1]:.3f} (< 90 % kept)")
+    else:
+        failures.append("no 'phase 3 done' line with heights and retained fractions")
+    stretch = numbers_after(wire_done.get(4, ""), "wire stretch energy")
+    check(stretch > 0, f"wire: stretch energy after the walls {stretch} (expected > 0)")
+    if failures:
+        print("check column: FAILED\n  " + "\n  ".join(failures))
+        sys.exit(1)
+    print("check column: passed")
+
+
+if __name__ == "__main__":
+    main()
