@@ -88,7 +88,7 @@ if command -v pvbatch > /dev/null && command -v xvfb-run > /dev/null; then
   for s in "$rest" "$loaded"; do
     wire_arg=()
     [ -f "$out/vtk/column_wire.$s.vtp" ] && wire_arg=(--wire "$out/vtk/column_wire.$s.vtp")
-    xvfb-run -a pvbatch "$here/nscd_render.py" --grains "$col/column.grains.$s.vtk" "${wire_arg[@]}" \
+    xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch "$here/nscd_render.py" --grains "$col/column.grains.$s.vtk" "${wire_arg[@]}" \
       --network "$out/vtk/column_network.$s.vtp" --min-force 0.02 --size 600 800 \
       --out "$out/fig2_step$s" 2>&1 | grep -v "^$" | grep -v "ERR|\|WARN|" || true
   done
