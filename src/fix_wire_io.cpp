@@ -149,7 +149,7 @@ void FixWire::write_restart(FILE *fp)
   const int size = (int) (sizeof(header) + all.size() * sizeof(wire::StoredContact));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(header, sizeof(double), 3, fp);
-  fwrite(all.data(), sizeof(wire::StoredContact), all.size(), fp);
+  if (!all.empty()) fwrite(all.data(), sizeof(wire::StoredContact), all.size(), fp);    // data() may be null
 }
 
 /* read_restart hands every rank the whole block; hand_over_memories() keeps the own ones. */
@@ -164,10 +164,14 @@ void FixWire::restart(char *buf)
                      "are not read (they start again from zero)");
     return;
   }
+  if (header[0] != kRestartVersion)    // versions are negative numbers: -2 is format 2
+    error->all(FLERR, "fix wire {}: the restart file holds the wire in format {}, this build reads "
+               "format {}; use a newer build or another fix ID", id, -header[0], -kRestartVersion);
   std::memcpy(header, buf, sizeof(header));
   state_dt = header[1];
   lib->restored.resize((size_t) header[2]);
-  std::memcpy(lib->restored.data(), buf + sizeof(header), lib->restored.size() * sizeof(wire::StoredContact));
+  if (!lib->restored.empty())    // data() may be null
+    std::memcpy(lib->restored.data(), buf + sizeof(header), lib->restored.size() * sizeof(wire::StoredContact));
   memories_on_every_rank = true;
 }
 
