@@ -135,8 +135,8 @@ void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, 
   Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & fix.groupbit) || avec->shape[i] == 0) continue;
-    const double closing = (vec3(atom->v[i]) - nscd::Vec3(0.0, 0.0, vz)).norm() +
-        vec3(avec->omega[i]).norm() * avec->radius[i];
+    const double closing = closing_speed_on_boundary(vec3(atom->v[i]), vec3(avec->omega[i]), avec->radius[i],
+                                                     nscd::Vec3(0.0, 0.0, vz));
     const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {

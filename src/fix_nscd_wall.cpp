@@ -184,7 +184,7 @@ void FixNSCDWall::Wall::append_contacts(std::vector<nscd::Contact> &contacts, do
   Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & fix.groupbit) || avec->shape[i] == 0) continue;
-    const double closing = (vec3(atom->v[i]) - velocity).norm() + vec3(avec->omega[i]).norm() * avec->radius[i];
+    const double closing = closing_speed_on_boundary(vec3(atom->v[i]), vec3(avec->omega[i]), avec->radius[i], velocity);
     const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {

@@ -29,6 +29,14 @@ inline double speculative_activation(double base, double closing_speed, double d
   return std::isfinite(ahead) ? std::max(base, ahead) : base;
 }
 
+// The closing speed of a grain on a boundary moving at `boundary_velocity`, for
+// speculative_activation: its centre's relative speed plus its spin times its radius.
+inline double closing_speed_on_boundary(const nscd::Vec3 &velocity, const nscd::Vec3 &omega, double radius,
+                                        const nscd::Vec3 &boundary_velocity)
+{
+  return (velocity - boundary_velocity).norm() + omega.norm() * radius;
+}
+
 struct ContactLaw {
   double friction = 0.0;
   double restitution = 0.0;
