@@ -11,7 +11,7 @@
 # exists) and log.NAME (doc/analysis.md lists the deck lines). REST_STEP: the snapshot
 # before loading (default: the last dump before the log's thermo shows v_phase = 5, the
 # loading); LOADED_STEP: under load (default: the last dump). Writes OUT_DIR/fig2_*.png (ParaView, when pvbatch and xvfb-run are there),
-# fig3_column.png, fig3_silo.png, fig4.png, fig5_column.png, fig6.png (when the
+# fig3_column.png, fig3_silo.png, fig4.png, fig5_column.png, fig5_silo.png, fig6.png (when the
 # wire-contact dumps exist), series_column.png, series_silo.png, each with its CSV, and
 # prints the numbers the papers compare (mean fabric angle of each, fraction of wire-grain
 # forces within 30 degrees of the vertical). Each network picture is normalised by its own
@@ -62,6 +62,11 @@ analysis fabric-angle --run "column=$col/column.fabric.$rest.dump" \
 # Fig. 5: Fn(r) of the column at every dumped step from REST_STEP on
 mapfile -t load_steps < <(for s in "${col_steps[@]}"; do [ "$s" -ge "$rest" ] && echo "$s"; done)
 analysis force-profile "$col"/column.pairs.*.dump --steps "${load_steps[@]}" -o "$out/fig5_column"
+# and of the silo, at rest and under its plate
+mapfile -t silo_load_steps < <(for s in "${silo_steps[@]}"; do [ "$s" -ge "$silo_last" ] && echo "$s"; done)
+if ls "$silo"/silo.pairs.*.dump > /dev/null 2>&1; then
+  analysis force-profile "$silo"/silo.pairs.*.dump --steps "${silo_load_steps[@]}" -o "$out/fig5_silo"
+fi
 
 # Fig. 6: wire-grain force orientations, before and under load
 if ls "$col"/column.wcontacts.*.dump > /dev/null 2>&1; then
