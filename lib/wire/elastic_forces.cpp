@@ -33,7 +33,43 @@ Vec3 unit_or_zero(const Vec3 &v)
   return n > 0.0 ? Vec3(v / n) : Vec3::Zero();
 }
 
+// atan(y) for 0 <= |y| <= tan(pi/8): y + y z P(z), z = y^2, P near-minimax (coefficients
+// from tools/wire_atan_coefficients.py: error within 1.02 x 2^-53 of atan(y)).
+double atan_small(double y)
+{
+  static constexpr double c[] = {-0.3333333333333333,   0.1999999999999552,   -0.14285714284666542,
+                                 0.11111111015256361,   -0.09090904578123903, 0.07692183190826087,
+                                 -0.06664511447381948,  0.0585814891280221,   -0.0508544973794026,
+                                 0.03923165829558719,   -0.01917688711906226};
+  // Estrin's scheme: a quarter of Horner's chain of dependent operations.
+  const double z = y * y, z2 = z * z, z4 = z2 * z2, z8 = z4 * z4;
+  const double p01 = c[0] + c[1] * z, p23 = c[2] + c[3] * z, p45 = c[4] + c[5] * z, p67 = c[6] + c[7] * z,
+               p89 = c[8] + c[9] * z;
+  const double p = (p01 + p23 * z2) + (p45 + p67 * z2) * z4 + (p89 + c[10] * z2) * z8;
+  return y + y * z * p;
+}
+
+// Multiples of pi/4 as a double and the rest, so that hi + (lo + x) rounds once.
+constexpr double kPiHi = 3.141592653589793, kPiLo = 1.2246467991473532e-16;
+constexpr double kHalfPiHi = 1.5707963267948966, kHalfPiLo = 6.123233995736766e-17;
+constexpr double kQuarterPiHi = 0.7853981633974483, kQuarterPiLo = 3.061616997868383e-17;
+constexpr double kThreeQuarterPiHi = 2.356194490192345, kThreeQuarterPiLo = 9.184850993605148e-17;
+constexpr double kTanEighthPi = 0.41421356237309503;
+
 }    // namespace
+
+// In each eighth of [0, pi] around a multiple m pi/4 (the two ends: a sixteenth), the angle
+// is m pi/4 + atan(y) with |y| <= tan(pi/8), y formed from sine and cosine with one
+// division: tan(nu - pi/4) = (s - c) / (s + c), tan(nu - 3 pi/4) = (s + c) / (c - s).
+double angle_from_sine_cosine(double sine, double cosine)
+{
+  const double s = sine, c = cosine, t = kTanEighthPi;
+  if (s <= t * c) return c > 0.0 ? atan_small(s / c) : 0.0;    // (0, 0) -> 0, as atan2
+  if (t * s <= c) return kQuarterPiHi + (kQuarterPiLo + atan_small((s - c) / (s + c)));
+  if (-t * s <= c) return kHalfPiHi + (kHalfPiLo - atan_small(c / s));
+  if (-t * c <= s) return kThreeQuarterPiHi + (kThreeQuarterPiLo + atan_small((s + c) / (c - s)));
+  return kPiHi + (kPiLo - atan_small(s / -c));
+}
 
 double angle_between(const Vec3 &u, const Vec3 &w)
 {
@@ -73,7 +109,7 @@ BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, co
   const double sine = uh.cross(wh).norm();
 
   BendingForces out;
-  out.angle = std::atan2(sine, cosine);
+  out.angle = angle_from_sine_cosine(sine, cosine);
   out.energy = 0.5 * k_rot * out.angle * out.angle;
   // dnu/du = -p_u / |u| and dnu/dw = +p_w / |w| with the unit in-plane perpendiculars
   // p_u = unit(wh - cos uh) (towards w, normal to u) and p_w = unit(uh - cos wh). Both
