@@ -343,18 +343,6 @@ void FixWire::gather_elements()
                wire_radius, comm->nprocs > 1 ? "MPI ranks" : "a periodic boundary", needed);
 }
 
-void FixWire::rescale_states(double new_dt)
-{
-  for (int i = 0; i < atom->nlocal && state_dt > 0.0 && state_dt != new_dt; i++) {
-    if (gear[i][kGearColumns - 1] == 0.0) continue;
-    wire::Gear5State s;
-    s.unpack(gear[i]);
-    wire::gear5_change_step(s, state_dt, new_dt);
-    s.pack(gear[i]);
-  }
-  state_dt = new_dt;
-}
-
 /* ---------------------------------------------------------------------- the step */
 
 void FixWire::post_force(int /*vflag*/)
@@ -540,25 +528,6 @@ void FixWire::update_scene(bool reindexed)
   lib->contacts->begin_step(std::move(scene), update->dt, reindexed);
 }
 
-/* After atoms moved between ranks, each contact memory goes to the rank that now computes
-   its contact: the owner of the key's first node. Only the memories whose node left travel
-   (one gather over the ranks). After read_restart every rank holds all: each keeps its own. */
-void FixWire::hand_over_memories()
-{
-  auto owned_here = [&](std::int64_t t) {
-    const int i = atom->map((tagint) t);
-    return i >= 0 && i < atom->nlocal;
-  };
-  const bool send = comm->nprocs > 1 && !memories_on_every_rank;
-  const std::vector<wire::StoredContact> leaving = lib->contacts->take_memories_unless(owned_here);
-  memories_on_every_rank = false;
-  if (!send) return;
-  std::vector<wire::StoredContact> arriving;
-  for (const wire::StoredContact &c : gather_records(leaving, world, true))
-    if (owned_here(c.key[0])) arriving.push_back(c);
-  lib->contacts->add_memories(arriving);
-}
-
 /* The subcycle rebuilds its candidate lists when something moved too far
    (lib/wire/contact_model.h), but only atoms within the ghost cutoff are there to be found:
    a pair closing by more than the neighbour skin in a step may lie beyond it. Such steps
@@ -613,12 +582,4 @@ void FixWire::hand_forces()
   for (size_t k = 0; k < n; k++) store(reactions.mean_force(reactions.num_grains() - (int) (n - k)), &mine[3 * k]);
   MPI_Allreduce(mine.data(), all.data(), (int) all.size(), MPI_DOUBLE, MPI_SUM, world);
   for (size_t k = 0; k < n; k++) lib->boundaries[k].boundary->take_wire_force(vec3(&all[3 * k]), update->ntimestep);
-}
-
-double FixWire::memory_usage()
-{
-  const wire::WireNodeSet &nodes = lib->step.nodes;
-  return (double) atom->nmax * kGearColumns * sizeof(double) + (double) nodes.positions.size() * 3 * sizeof(Vec3) +
-      (double) nodes.state.size() * sizeof(wire::Gear5State) + (double) grain_force_buffer.size() * sizeof(double) +
-      (lib->contacts ? (double) lib->contacts->candidates() * 256.0 : 0.0);
 }

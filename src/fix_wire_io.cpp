@@ -1,7 +1,8 @@
 /* fix wire's input and output: LAMMPS' communication of wire nodes and grains (forward,
    reverse, with the periodic shift of positions), the per-atom Gear states (grow, copy,
-   exchange, restart), the global restart block of contact memories, the timing report
-   after a run and the contact rows of compute wire/contacts. */
+   exchange, restart, rescaling to a new substep), the hand-over of contact memories
+   between ranks, the global restart block of contact memories, the memory use, the
+   timing report after a run and the contact rows of compute wire/contacts. */
 
 #include "fix_wire.h"
 #include "fix_wire_lib.h"
@@ -134,6 +135,48 @@ void FixWire::unpack_restart(int nlocal, int nth)
   int m = 0;
   for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
   std::copy(&extra[nlocal][m + 1], &extra[nlocal][m + 1] + kGearColumns, gear[nlocal]);
+}
+
+/* The stored Gear states rescaled to a new substep (a new timestep or substep count). */
+void FixWire::rescale_states(double new_dt)
+{
+  for (int i = 0; i < atom->nlocal && state_dt > 0.0 && state_dt != new_dt; i++) {
+    if (gear[i][kGearColumns - 1] == 0.0) continue;
+    wire::Gear5State s;
+    s.unpack(gear[i]);
+    wire::gear5_change_step(s, state_dt, new_dt);
+    s.pack(gear[i]);
+  }
+  state_dt = new_dt;
+}
+
+/* After atoms moved between ranks, each contact memory goes to the rank that now computes
+   its contact: the owner of the key's first node. Only the memories whose node left travel
+   (one gather over the ranks). After read_restart every rank holds all: each keeps its own. */
+void FixWire::hand_over_memories()
+{
+  auto owned_here = [&](std::int64_t t) {
+    const int i = atom->map((tagint) t);
+    return i >= 0 && i < atom->nlocal;
+  };
+  const bool send = comm->nprocs > 1 && !memories_on_every_rank;
+  const std::vector<wire::StoredContact> leaving = lib->contacts->take_memories_unless(owned_here);
+  memories_on_every_rank = false;
+  if (!send) return;
+  std::vector<wire::StoredContact> arriving;
+  for (const wire::StoredContact &c : gather_records(leaving, world, true))
+    if (owned_here(c.key[0])) arriving.push_back(c);
+  lib->contacts->add_memories(arriving);
+}
+
+/* Per-atom Gear states, node arrays, the grain force buffer, about 256 bytes per candidate
+   contact pair. */
+double FixWire::memory_usage()
+{
+  const wire::WireNodeSet &nodes = lib->step.nodes;
+  return (double) atom->nmax * kGearColumns * sizeof(double) + (double) nodes.positions.size() * 3 * sizeof(Vec3) +
+      (double) nodes.state.size() * sizeof(wire::Gear5State) + (double) grain_force_buffer.size() * sizeof(double) +
+      (lib->contacts ? (double) lib->contacts->candidates() * 256.0 : 0.0);
 }
 
 /* Global restart: a version number, the step of the stored Gear states and the contact

@@ -36,6 +36,12 @@ double turned_by(const Quat &from, const Quat &to)
   return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
 }
 
+// Squared distance the farther of two nodes moved from where it was seen.
+double farther_squared(const Vec3 &x1, const Vec3 &seen1, const Vec3 &x2, const Vec3 &seen2)
+{
+  return std::max((x1 - seen1).squaredNorm(), (x2 - seen2).squaredNorm());
+}
+
 bool lower_element(const ElementCopy &a, const ElementCopy &b)
 {
   return a.id_a < b.id_a || (a.id_a == b.id_a && a.id_b < b.id_b);
@@ -106,7 +112,10 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
       moved[g] = (now.position - then.position).norm() +
                  turned_by(then.orientation, now.orientation) * scene.grains[g].shape->bounding_radius;
     }
-    for (size_t k = 0; k < grain_pairs_.size(); ++k) grain_watch_[k].threshold -= moved[grain_pairs_[k].grain];
+    for (size_t k = 0; k < grain_pairs_.size(); ++k) {
+      grain_watch_[k].threshold -= moved[grain_pairs_[k].grain];
+      grain_pairs_[k].seen_gap -= moved[grain_pairs_[k].grain];
+    }
   }
   records_.clear();
   record_of_.clear();
@@ -323,12 +332,19 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
   for (size_t k = 0; k < grain_watch_.size(); ++k) {
     const GrainWatch &w = grain_watch_[k];
     if (std::max(moved[w.a], moved[w.b]) < w.threshold) continue;    // cannot touch yet
-    out.wire_grain += grain_contact(grain_pairs_[k], grain_watch_[k], x, v, dt, f, reactions, out);
+    GrainPair &p = grain_pairs_[k];
+    if (p.seen_gap > 0.0 && farther_squared(x[p.a], p.seen[0], x[p.b], p.seen[1]) < p.seen_gap * p.seen_gap) continue;
+    out.wire_grain += grain_contact(p, grain_watch_[k], x, v, dt, f, reactions, out);
   }
   for (size_t k = 0; k < wire_watch_.size(); ++k) {
     const WireWatch &w = wire_watch_[k];
     if (std::max(moved[w.a1], moved[w.a2]) + std::max(moved[w.b1], moved[w.b2]) < w.threshold) continue;
-    out.wire_wire += wire_contact(wire_pairs_[k], wire_watch_[k], x, v, dt, f, out);
+    WirePair &p = wire_pairs_[k];
+    if (p.seen_gap > 0.0 && std::sqrt(farther_squared(x[p.a1], p.seen[0], x[p.a2], p.seen[1])) +
+                                    std::sqrt(farther_squared(x[p.b1], p.seen[2], x[p.b2], p.seen[3])) <
+                                p.seen_gap)
+      continue;
+    out.wire_wire += wire_contact(p, wire_watch_[k], x, v, dt, f, out);
   }
   for (BoundaryPair &p : boundary_pairs_) out.wire_boundary += boundary_contact(p, x, v, tau, dt, f, reactions, out);
   return out;
@@ -347,7 +363,9 @@ bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vec
   watch.threshold = t.clearance - std::max(moved_[p.a], moved_[p.b]);
   ++grain_evaluations_;
   grain_from_hint_ += t.from_hint;
+  p.seen_gap = t.clearance;
   if (t.clearance > 0.0) {
+    p.seen = {xa, xb};
     p.memory = ContactMemory{};
     return false;
   }
@@ -394,7 +412,9 @@ bool ContactModel::wire_contact(WirePair &p, WireWatch &watch, const std::vector
   const std::optional<SegmentContact> c = contact_segments({x[p.a1], x[p.a2], radius_}, {x[p.b1], x[p.b2], radius_},
                                                            std::numeric_limits<double>::max());
   watch.threshold = c->gap - std::max(moved_[p.a1], moved_[p.a2]) - std::max(moved_[p.b1], moved_[p.b2]);
+  p.seen_gap = c->gap;
   if (c->gap >= 0.0) {
+    p.seen = {x[p.a1], x[p.a2], x[p.b1], x[p.b2]};
     p.memory = ContactMemory{};
     return false;
   }

@@ -200,18 +200,29 @@ class ContactModel {
   std::size_t candidates() const { return grain_pairs_.size() + wire_pairs_.size() + boundary_pairs_.size(); }
 
  private:
+  // A pair found open at its last evaluation keeps where its nodes were then (`seen`) and
+  // its smallest gap then (lowered by its grain's motion since): no point of it can touch
+  // while its nodes have moved less than that from there (for two elements: the sum over
+  // both). A finer test than the watches below, for the pairs they let through; <= 0:
+  // evaluate.
   struct GrainPair {
     int a, b, grain;
     ContactKey key;
     ContactMemory memory;
     FeatureHint hint;
+    std::array<Vec3, 2> seen;
+    double seen_gap = -1.0;
   };
   struct WirePair {
     int a1, a2, b1, b2;
     ContactKey key;
     ContactMemory memory;
+    std::array<Vec3, 4> seen;
+    double seen_gap = -1.0;
   };
   // Which pairs need no look this substep, in arrays of their own (read every substep).
+  // Coarser than the pairs' own test (it measures displacements from the list build, not
+  // from the last evaluation) but a 16-byte read for each candidate pair.
   // A pair whose smallest gap was g at its last evaluation, when its nodes had moved by
   // up to D_then since the lists were built, has a gap > 0 as long as the displacement of
   // its nodes (max over an element's two) stays below threshold = g - D_then (for two
