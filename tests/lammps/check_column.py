@@ -11,8 +11,9 @@ Fails (exit 1, naming the check) unless, in both runs:
   * the seated plate, at rest on the column under its own weight M g, feels M g from the
     column to 5 % (its equation of motion with zero acceleration; the deck seats it until
     slower than 1e-3 and within 1 %, so this fails when it never comes to rest);
-  * under the first load (the column is rigid: the plate stays at rest) the plate force is
-    load + M g to 2 %;
+  * under load the plate force is load + M g: the median relative error over the thermo
+    rows under load below 2 % (one row may be off while the column settles under a new
+    load and the plate accelerates: force = load + M g + M a);
 and with the wire:
   * the wire carries tension after the walls are gone (stretch energy > 0);
   * the column keeps at least 90 % of its grains within the loop radius and of its height
@@ -24,6 +25,8 @@ collapse of the control is shown at 5 layers in examples/column/README.md, not h
 import os
 import re
 import sys
+
+import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
 from nscd_analysis import logs  # noqa: E402
@@ -65,13 +68,16 @@ def check_run(path, label):
     load = load[(load[:, 0] == 5) & (load[:, 2] > 0)]
     check(len(load) > 0, f"{label}: no thermo row under load")
     if len(load):
-        first = load[0]
-        error = abs(first[1] / (first[2] + weight) - 1)
-        check(error < 0.02, f"{label}: first row under load: plate force {first[1]:.4g}, load + weight "
-                            f"{first[2] + weight:.4g} (2 % allowed)")
+        # Newton on the plate: force = load + weight + m a. A column that settles under a new
+        # load lets the plate accelerate for a moment (a row can be 8 % off), so the test is on
+        # the median over the rows under load, which a quasi-static column meets closely.
+        errors = np.abs(load[:, 1] / (load[:, 2] + weight) - 1)
+        error = float(np.median(errors))
+        check(error < 0.02, f"{label}: plate force against load + weight under load: median relative "
+                            f"error {error:.3g} over {len(load)} rows (2 % allowed)")
         print(f"{label}: largest interpenetration {deepest:.3g}, seated plate force {seated_force:.4g} "
-              f"(weight {weight}), under load {first[2]:.4g}: plate force {first[1]:.4g} (relative error "
-              f"{error:.2g} from load + weight)")
+              f"(weight {weight}), under load up to {load[-1, 2]:.4g}: plate force = load + weight to a "
+              f"median {error:.2g} over {len(load)} rows (largest {errors.max():.2g})")
     return done
 
 
