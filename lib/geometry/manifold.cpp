@@ -254,8 +254,12 @@ bool add_face_contact(const ReferenceFace &ref, const Core &inc, int inc_support
 // ---- speculative points: vertices over faces ---------------------------------------------
 
 // Largest gap of a speculative point: what can close within the step, never beyond the
-// activation distance.
-double speculative_limit(const ManifoldInput &in) { return std::min(in.activation, in.speculative_distance); }
+// activation distance; at least the touching band of the point reduction (a point at gap ~ 0
+// must not come and go with round-off or the jitter of a grain at rest).
+double speculative_limit(const ManifoldInput &in)
+{
+  return std::min(in.activation, std::max(in.speculative_distance, Tolerance::kTouchBand * in.length_scale));
+}
 
 // The face of `ref` that point p lies highest above (largest signed distance from its
 // plane), and that height.
