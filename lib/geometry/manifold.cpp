@@ -420,7 +420,7 @@ void mark_feature_vertices(const Core &core, std::uint32_t feature, std::vector<
 // highest above. Key: the border edge and the edge of `inc`, as face clipping gives it.
 // `closest`: the number of closest-feature points at the front of the candidates.
 void add_edges_over_faces(const Core &ref, const Core &inc, bool ref_is_a, std::size_t closest,
-                          const ManifoldInput &in, ContactWorkspace &ws)
+                          double nearest, const ManifoldInput &in, ContactWorkspace &ws)
 {
   if (!ref.is_polytope() || !inc.is_polytope()) return;
   std::vector<char> &at_ref = ws.marks_ref, &at_inc = ws.marks_inc;
@@ -439,6 +439,9 @@ void add_edges_over_faces(const Core &ref, const Core &inc, bool ref_is_a, std::
   }
   const double tol = Tolerance::kClip * in.length_scale;
   const double radii = ref.radius + inc.radius, limit = speculative_limit(in);
+  // Cores apart: no point of inc is nearer to ref than `nearest`, so an edge wholly lower
+  // than that under a face plane (a face turned away) has no crossing over it to offer.
+  const double lowest = nearest > 0.0 ? nearest - tol : -std::numeric_limits<double>::infinity();
   for (const auto &edge : inc.shape->edges) {
     if (!at_inc[edge[0]] && !at_inc[edge[1]]) continue;
     const Vec3 &p0 = inc.vertices[edge[0]], &p1 = inc.vertices[edge[1]];
@@ -447,13 +450,15 @@ void add_edges_over_faces(const Core &ref, const Core &inc, bool ref_is_a, std::
       const Vec3 &n = ref.normals[f];
       const double h0 = n.dot(p0) - ref.offsets[f], h1 = n.dot(p1) - ref.offsets[f];
       OverFace over;
-      if (std::min(h0, h1) - radii > limit || !clip_to_face(ref, f, p0, p1, over)) continue;
+      if (std::min(h0, h1) - radii > limit || std::max(h0, h1) - radii < lowest ||
+          !clip_to_face(ref, f, p0, p1, over))
+        continue;
       const int m = static_cast<int>(loop.size());
       for (const auto &[s, side] : {std::pair(over.lo, over.side_lo), std::pair(over.hi, over.side_hi)}) {
         if (side < 0) continue;    // the edge's own end: a vertex over the face
         const Vec3 p = p0 + s * (p1 - p0);
         const double height = h0 + s * (h1 - h0);
-        if (!(height - radii <= limit)) continue;
+        if (!(height - radii <= limit) || height - radii < lowest) continue;
         double highest;
         highest_face(ref, p, highest);
         if (highest > height + tol) continue;
@@ -594,8 +599,8 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, Conta
   for (const Candidate &c : ws.candidates) nearest = std::min(nearest, c.gap);
   if (in.speculative_distance > 0.0 && ws.candidates.size() < 3 && nearest <= speculative_limit(in)) {
     const std::size_t closest = ws.candidates.size();
-    add_edges_over_faces(a, b, true, closest, in, ws);
-    add_edges_over_faces(b, a, false, closest, in, ws);
+    add_edges_over_faces(a, b, true, closest, nearest, in, ws);
+    add_edges_over_faces(b, a, false, closest, nearest, in, ws);
     add_vertices_over_faces(a, b, true, in, ws);
     add_vertices_over_faces(b, a, false, in, ws);
     // More than a contact holds: the closest features, then the speculative points that
