@@ -249,7 +249,7 @@ void PairNSCD::add_grain_contacts(int i, int j)
   const double pair_activation = std::min(speculative_activation(activation, closing, update->dt),
                                           activation + reach);
   // The points a turning grain brings down (vertices over faces, edges across face borders)
-  // only where they can close within this step: a pair at rest gets none.
+  // only where they can close within this step: a pair at rest gets only its touching ones.
   const double turning_reach = std::min(speculative_activation(0.0, closing, update->dt), pair_activation);
   // The shapes' own bounding radii, not the per-atom radius a `set diameter` could change.
   const double centres = shape_i.bounding_radius + shape_j.bounding_radius + pair_activation;

@@ -150,8 +150,9 @@ class ContactWorkspace {
 // Two grains i and j. Returns the contact points with gap <= activation (maybe none).
 // Where they meet edge- or corner-first, also the speculative points that a grain turning
 // about its first contact brings down within a step (vertices over faces, edges across the
-// borders of faces; doc/contact_geometry.md) with gaps up to speculative_distance (and the
-// activation): the distance the pair can close within the step.
+// borders of faces; doc/contact_geometry.md) with gaps up to speculative_distance (the
+// distance the pair can close within the step; at most the activation, at least 1e-3 of
+// the larger grain's bounding radius; 0: none). Throws ContactError for a NaN distance.
 ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
                           const Spheropolyhedron &shape_j, const Pose &pose_j,
                           double activation, ContactWorkspace &workspace,
