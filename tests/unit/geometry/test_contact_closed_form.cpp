@@ -203,6 +203,8 @@ TEST(ContactGrains, EdgeCrossingTheFarBorderOfAFaceIsAPointToo)
   }
   // Beyond the speculative distance (what the pair can close in the step), only the closest.
   EXPECT_EQ(contact_grains(scene.bar, scene.bar_pose(), scene.block, scene.block_pose(), 0.05, ws, 0.5 * upper).count, 1);
+  EXPECT_THROW(contact_grains(scene.bar, scene.bar_pose(), scene.block, scene.block_pose(), 0.05, ws, std::nan("")),
+               ContactError);
 }
 
 // Box i standing on a corner: 1 point under the corner.
