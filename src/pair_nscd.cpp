@@ -248,13 +248,16 @@ void PairNSCD::add_grain_contacts(int i, int j)
       vec3(avec->omega[i]).norm() * shape_i.bounding_radius + vec3(avec->omega[j]).norm() * shape_j.bounding_radius;
   const double pair_activation = std::min(speculative_activation(activation, closing, update->dt),
                                           activation + reach);
+  // The points a turning grain brings down (vertices over faces, edges across face borders)
+  // only where they can close within this step: a pair at rest gets only its touching ones.
+  const double turning_reach = std::min(speculative_activation(0.0, closing, update->dt), pair_activation);
   // The shapes' own bounding radii, not the per-atom radius a `set diameter` could change.
   const double centres = shape_i.bounding_radius + shape_j.bounding_radius + pair_activation;
   if (dx * dx + dy * dy + dz * dz >= centres * centres) return;
   nscd::ContactSet set;
   try {
     set = nscd::contact_grains(shape_i, avec->pose(i), shape_j, avec->pose(j), pair_activation,
-                               found->workspace);
+                               found->workspace, turning_reach);
   } catch (std::exception &e) {
     error->one(FLERR, "pair_style nscd: contact of atoms {} and {} failed: {}", atom->tag[i],
                atom->tag[j], e.what());

@@ -297,10 +297,12 @@ void sphere_pair(const Spheropolyhedron &si, const Pose &pi, const Spheropolyhed
 
 ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
                           const Spheropolyhedron &shape_j, const Pose &pose_j,
-                          double activation, ContactWorkspace &ws)
+                          double activation, ContactWorkspace &ws, double speculative_distance)
 {
   ContactSet out;
   check_activation(activation);
+  if (std::isnan(speculative_distance))
+    throw ContactError("speculative distance is NaN; give a distance >= 0 (0: no speculative points)");
   // Bounding spheres first: most pairs handed over by a neighbour list end here.
   const double reach = shape_i.bounding_radius + shape_j.bounding_radius + activation;
   if ((pose_j.position - pose_i.position).squaredNorm() > reach * reach) return out;
@@ -316,7 +318,7 @@ ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
   const Core a = place_core(shape_i, pose_i, origin, ws.vertices_i, ws.normals_i, ws.offsets_i);
   const Core b = place_core(shape_j, pose_j, origin, ws.vertices_j, ws.normals_j, ws.offsets_j);
   const double merge = merge_distance_for(shape_i.bounding_radius, shape_j.bounding_radius);
-  const ManifoldInput in{activation, std::max(shape_i.bounding_radius, shape_j.bounding_radius), merge, true};
+  const ManifoldInput in{activation, std::max(shape_i.bounding_radius, shape_j.bounding_radius), merge, speculative_distance};
   const Vec3 normal = build_manifold(a, b, in, ws);
   write_contact_set(ws, normal, origin, in.length_scale, out);
   return out;

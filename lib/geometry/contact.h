@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -142,12 +143,20 @@ class ContactWorkspace {
   std::vector<Candidate> candidates;            // manifold points before reduction
   std::vector<EdgeArc> arcs_i, arcs_j;          // edge arcs of the two cores
   std::vector<int> edges_near_i, edges_near_j;  // edges close enough to the other core
+  std::vector<char> marks_ref, marks_inc;       // vertices of the closest features
+  std::vector<int> near_faces;                  // faces through them
 };
 
 // Two grains i and j. Returns the contact points with gap <= activation (maybe none).
+// Where they meet edge- or corner-first, also the speculative points that a grain turning
+// about its first contact brings down within a step (vertices over faces, edges across the
+// borders of faces; doc/contact_geometry.md) with gaps up to speculative_distance (the
+// distance the pair can close within the step; at most the activation, at least 1e-3 of
+// the larger grain's bounding radius; 0: none). Throws ContactError for a NaN distance.
 ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
                           const Spheropolyhedron &shape_j, const Pose &pose_j,
-                          double activation, ContactWorkspace &workspace);
+                          double activation, ContactWorkspace &workspace,
+                          double speculative_distance = std::numeric_limits<double>::infinity());
 
 // Grain i against a plane wall j.
 ContactSet contact_grain_plane(const Spheropolyhedron &shape, const Pose &pose,

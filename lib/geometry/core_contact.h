@@ -67,9 +67,11 @@ struct ManifoldInput {
   double activation;       // keep points with gap <= activation
   double length_scale;     // larger bounding radius of the pair
   double merge_distance;   // points closer than this are merged
-  // Also every vertex of either core over a face of the other within the activation
-  // distance (grain pairs: the points a turning grain brings into contact in a step).
-  bool vertices_over_faces = false;
+  // Grain pairs: also the points a turning grain brings into contact within a step (every
+  // vertex of either core over a face of the other, and the edges at the closest features
+  // crossing the border of a face at the other's), with gaps up to this distance (and the
+  // activation). 0: none.
+  double speculative_distance = 0.0;
 };
 Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &input,
                     ContactWorkspace &workspace);

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace nscd {
 namespace geometry_detail {
@@ -252,6 +253,14 @@ bool add_face_contact(const ReferenceFace &ref, const Core &inc, int inc_support
 
 // ---- speculative points: vertices over faces ---------------------------------------------
 
+// Largest gap of a speculative point: what can close within the step, never beyond the
+// activation distance; at least the touching band of the point reduction (a point at gap ~ 0
+// must not come and go with round-off or the jitter of a grain at rest).
+double speculative_limit(const ManifoldInput &in)
+{
+  return std::min(in.activation, std::max(in.speculative_distance, Tolerance::kTouchBand * in.length_scale));
+}
+
 // The face of `ref` that point p lies highest above (largest signed distance from its
 // plane), and that height.
 int highest_face(const Core &ref, const Vec3 &p, double &height)
@@ -292,14 +301,15 @@ void add_vertices_over_faces(const Core &ref, const Core &inc, bool ref_is_a, co
 {
   if (!ref.is_polytope()) return;
   const double tol = Tolerance::kClip * in.length_scale;
-  const double reach = in.activation + ref.radius + inc.radius;
+  const double limit = speculative_limit(in);
+  const double reach = limit + ref.radius + inc.radius;
   for (int k = 0; k < inc.count; ++k) {
     const Vec3 &v = inc.vertices[k];
     if ((v - ref.centroid).squaredNorm() > (ref.extent + reach) * (ref.extent + reach)) continue;
     double height;
     const int f = highest_face(ref, v, height);
     const double gap = height - ref.radius - inc.radius;
-    if (!(gap <= in.activation) || !over_face(ref, f, v, tol)) continue;
+    if (!(gap <= limit) || !over_face(ref, f, v, tol)) continue;
     const std::uint64_t key = ref_is_a ? make_key(face_feature(f), vertex_feature(k))
                                        : make_key(vertex_feature(k), face_feature(f));
     // the closest features may already be this vertex on this face: one point per key
@@ -309,6 +319,170 @@ void add_vertices_over_faces(const Core &ref, const Core &inc, bool ref_is_a, co
     const Vec3 position = v + 0.5 * (ref.radius - inc.radius - height) * n;
     const Vec3 on_ref = v - height * n;
     ws.candidates.push_back({position, ref_is_a ? on_ref : v, gap, key, ref_is_a ? Vec3(-n) : n});
+  }
+}
+
+// The part of segment p0-p1 over face f of `ref` (inside its side planes): parameters
+// [lo, hi] along the segment and the side crossed at each end (-1: the segment's own end).
+// Returns false when no part of it is over the face.
+struct OverFace {
+  double lo = 0.0, hi = 1.0;
+  int side_lo = -1, side_hi = -1;
+};
+
+bool clip_to_face(const Core &ref, int f, const Vec3 &p0, const Vec3 &p1, OverFace &out)
+{
+  const auto &loop = ref.shape->faces[f].vertices;
+  const int m = static_cast<int>(loop.size());
+  out = OverFace{};
+  for (int k = 0; k < m; ++k) {
+    const Vec3 &r0 = ref.vertices[loop[k]], &r1 = ref.vertices[loop[(k + 1) % m]];
+    const Vec3 outward = (r1 - r0).cross(ref.normals[f]);    // counter-clockwise loop
+    const double d0 = outward.dot(p0 - r0), d1 = outward.dot(p1 - r0);
+    if (d0 > 0.0 && d1 > 0.0) return false;
+    if (d0 <= 0.0 && d1 <= 0.0) continue;
+    const double t = d0 / (d0 - d1);
+    if (d0 > 0.0 && t > out.lo) {
+      out.lo = t;
+      out.side_lo = k;
+    } else if (d0 <= 0.0 && t < out.hi) {
+      out.hi = t;
+      out.side_hi = k;
+    }
+  }
+  return out.lo < out.hi;
+}
+
+// One point per key: the same pair of edges is found from a face of either core; the nearer
+// of the two points stays, whichever core came first (so contact(j, i) mirrors contact(i, j)).
+void add_or_keep_nearer(const Candidate &point, std::vector<Candidate> &candidates)
+{
+  const auto same = std::find_if(candidates.begin(), candidates.end(), [&](const Candidate &c) { return c.key == point.key; });
+  if (same == candidates.end())
+    candidates.push_back(point);
+  else if (point.gap < same->gap)
+    *same = point;
+}
+
+// Keeps the first `closest` candidates and, of the others, the ones of smallest gap up to
+// ContactSet::kMaxPoints in all, in their order (which is stable under small motions).
+// Ties go to the smaller key of the pair either way round (the same for contact(j, i)).
+void keep_nearest_speculative(std::size_t closest, std::vector<Candidate> &candidates)
+{
+  const std::size_t room = static_cast<std::size_t>(ContactSet::kMaxPoints);
+  if (candidates.size() <= room) return;
+  std::vector<std::size_t> rest;
+  for (std::size_t k = closest; k < candidates.size(); ++k) rest.push_back(k);
+  auto rank = [&](std::size_t k) {
+    const std::uint64_t key = candidates[k].key;
+    return std::pair(candidates[k].gap, std::min(key, swapped_key(key)));
+  };
+  std::sort(rest.begin(), rest.end(), [&](std::size_t p, std::size_t q) { return rank(p) < rank(q); });
+  rest.resize(room - closest);
+  std::sort(rest.begin(), rest.end());
+  std::size_t kept = closest;
+  for (const std::size_t k : rest) candidates[kept++] = candidates[k];
+  candidates.resize(kept);
+}
+
+// Marks the vertices of `feature` of `core` (a vertex, an edge's two ends, a face's loop).
+void mark_feature_vertices(const Core &core, std::uint32_t feature, std::vector<char> &marks)
+{
+  const std::uint32_t index = feature_index(feature);
+  switch (feature_type(feature)) {
+  case FeatureType::Vertex: marks[index] = 1; break;
+  case FeatureType::Edge:
+    marks[index & 0x7fffu] = 1;
+    marks[index >> 15] = 1;
+    break;
+  case FeatureType::Face:
+    for (const int v : core.shape->faces[index].vertices) marks[v] = 1;
+    break;
+  case FeatureType::Wall: break;
+  }
+}
+
+// Every edge of `inc` at the closest features crossing the border of a face of `ref` at the
+// closest features, within the speculative limit: a point where it crosses (the edge
+// counterpart of the vertices over faces). A grain lying almost edge-on across a
+// neighbour's face gets one closest point (the face is not aligned closely enough to be
+// clipped); turning about it brings the edge down onto the face's far border within the
+// step, and the ends of the edge lie beside the face, so no vertex over a face stands for
+// that point. Measured in benchmarks/hard/in.fast_pour (doc/pair_nscd.md): every overlap
+// that grew by more than 0.2 r in a step grew at an edge-edge crossing next to the closest
+// features (an edge through a vertex of one closest feature, an edge of a face through a
+// vertex of the other); these are the ones searched, as all edges over all faces cost 5x
+// the whole contact detection. The point is the nearer of: the height over the face plane
+// (the distance to the core where positive, a lower bound otherwise), with the face's
+// normal; the distance to the border edge, with the two edges' closest points and their
+// direction, where those lie inside both edges (beyond the border the neighbour face falls
+// away, so the edges may be nearer). Taken where the face is the one the crossing is
+// highest above. Key: the border edge and the edge of `inc`, as face clipping gives it.
+// `closest`: the number of closest-feature points at the front of the candidates.
+void add_edges_over_faces(const Core &ref, const Core &inc, bool ref_is_a, std::size_t closest,
+                          double nearest, const ManifoldInput &in, ContactWorkspace &ws)
+{
+  if (!ref.is_polytope() || !inc.is_polytope()) return;
+  std::vector<char> &at_ref = ws.marks_ref, &at_inc = ws.marks_inc;
+  at_ref.assign(ref.count, 0);
+  at_inc.assign(inc.count, 0);
+  for (std::size_t k = 0; k < closest; ++k) {
+    const std::uint64_t key = ws.candidates[k].key;
+    mark_feature_vertices(ref, ref_is_a ? key_feature_i(key) : key_feature_j(key), at_ref);
+    mark_feature_vertices(inc, ref_is_a ? key_feature_j(key) : key_feature_i(key), at_inc);
+  }
+  std::vector<int> &faces = ws.near_faces;
+  faces.clear();
+  for (int f = 0; f < ref.face_count(); ++f) {
+    const auto &loop = ref.shape->faces[f].vertices;
+    if (std::any_of(loop.begin(), loop.end(), [&](int v) { return at_ref[v] != 0; })) faces.push_back(f);
+  }
+  const double tol = Tolerance::kClip * in.length_scale;
+  const double radii = ref.radius + inc.radius, limit = speculative_limit(in);
+  // Cores apart: no point of inc is nearer to ref than `nearest`, so an edge wholly lower
+  // than that under a face plane (a face turned away) has no crossing over it to offer.
+  const double lowest = nearest > 0.0 ? nearest - tol : -std::numeric_limits<double>::infinity();
+  for (const auto &edge : inc.shape->edges) {
+    if (!at_inc[edge[0]] && !at_inc[edge[1]]) continue;
+    const Vec3 &p0 = inc.vertices[edge[0]], &p1 = inc.vertices[edge[1]];
+    for (const int f : faces) {
+      const auto &loop = ref.shape->faces[f].vertices;
+      const Vec3 &n = ref.normals[f];
+      const double h0 = n.dot(p0) - ref.offsets[f], h1 = n.dot(p1) - ref.offsets[f];
+      OverFace over;
+      if (std::min(h0, h1) - radii > limit || std::max(h0, h1) - radii < lowest ||
+          !clip_to_face(ref, f, p0, p1, over))
+        continue;
+      const int m = static_cast<int>(loop.size());
+      for (const auto &[s, side] : {std::pair(over.lo, over.side_lo), std::pair(over.hi, over.side_hi)}) {
+        if (side < 0) continue;    // the edge's own end: a vertex over the face
+        const Vec3 p = p0 + s * (p1 - p0);
+        const double height = h0 + s * (h1 - h0);
+        if (!(height - radii <= limit) || height - radii < lowest) continue;
+        double highest;
+        highest_face(ref, p, highest);
+        if (highest > height + tol) continue;
+        const int r0 = loop[side], r1 = loop[(side + 1) % m];
+        const std::uint64_t key = ref_is_a ? make_key(edge_feature(r0, r1), edge_feature(edge[0], edge[1]))
+                                           : make_key(edge_feature(edge[0], edge[1]), edge_feature(r0, r1));
+        Vec3 normal = n, on_ref = p - height * n, on_inc = p;
+        double gap = height - radii;
+        if (height > tol) {
+          const SegmentClosest c = closest_points_on_segments(p0, p1, ref.vertices[r0], ref.vertices[r1], tol);
+          const Vec3 between = c.point_a - c.point_b;    // from ref to inc
+          const double distance = between.norm();
+          const bool inside_both = c.s > 0.0 && c.s < 1.0 && c.t > 0.0 && c.t < 1.0;    // else a vertex's
+          if (inside_both && distance > tol && distance < height) {
+            normal = between / distance;
+            on_ref = c.point_b;
+            on_inc = c.point_a;
+            gap = distance - radii;
+          }
+        }
+        const Vec3 position = 0.5 * (on_ref + on_inc + (ref.radius - inc.radius) * normal);
+        add_or_keep_nearer({position, ref_is_a ? on_ref : on_inc, gap, key, ref_is_a ? Vec3(-normal) : normal}, ws.candidates);
+      }
+    }
   }
 }
 
@@ -419,9 +593,22 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, Conta
   for (Candidate &c : ws.candidates) c.normal = normal;
   // A patch (three or more points) already holds the grain against turning onto the
   // neighbour; the speculative points are for pairs meeting edge- or corner-first.
-  if (in.vertices_over_faces && ws.candidates.size() < 3) {
+  // A speculative point's gap is at least the cores' distance (its height over a face it
+  // lies over), so a pair farther apart than the limit has none.
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Candidate &c : ws.candidates) nearest = std::min(nearest, c.gap);
+  if (in.speculative_distance > 0.0 && ws.candidates.size() < 3 && nearest <= speculative_limit(in)) {
+    const std::size_t closest = ws.candidates.size();
+    add_edges_over_faces(a, b, true, closest, nearest, in, ws);
+    add_edges_over_faces(b, a, false, closest, nearest, in, ws);
     add_vertices_over_faces(a, b, true, in, ws);
     add_vertices_over_faces(b, a, false, in, ws);
+    // More than a contact holds: the closest features, then the speculative points that
+    // close first (smallest gap). The reduction for patch coverage is for touching patches;
+    // it would drop a point about to close for one far away.
+    merge_close_points(in.merge_distance, ws.candidates);
+    keep_nearest_speculative(std::min(closest, ws.candidates.size()), ws.candidates);
+    return normal;
   }
   merge_close_points(in.merge_distance, ws.candidates);
   return normal;

@@ -1,6 +1,7 @@
 // Grain-grain contacts with closed-form answers: boxes, rotated boxes, spheres, capsules.
 #include "geometry/contact.h"
 #include "geometry/feature_key.h"
+#include "bar_across_block.h"
 #include "shapes_for_tests.h"
 
 #include <gtest/gtest.h>
@@ -169,6 +170,41 @@ TEST(ContactGrains, VerticesOverAFaceWithinTheActivationArePointsToo)
   // Only pairs meeting on an edge or a corner get them: a face-on-face patch is enough.
   const Pose flat = place(small, Vec3(0, 0, 1 + 2 * r + g + 1));
   EXPECT_EQ(contact_grains(small, flat, wide, below, 0.5, ws).count, 4);
+}
+
+// A bar's lowest edge lies across a narrow block's top face, tilted by 2 degrees: the
+// closest features are the edge and the block's lower border edge (1 point); a bar turning
+// about it brings the edge down onto the other border edge within the step, so within the
+// speculative distance that crossing is a point too, with the edges' common normal and
+// their distance (2 half_width sin(tilt) more), found from either grain. Both ends of the
+// edge lie beside the face: no vertex over a face stands for it.
+TEST(ContactGrains, EdgeCrossingTheFarBorderOfAFaceIsAPointToo)
+{
+  test::BarAcrossBlock scene;
+  scene.tilt = 2.0 * kPi / 180.0;
+  scene.gap = 0.01;
+  ContactWorkspace ws;
+  const double upper = scene.upper_gap();    // 0.0309
+  const auto without = contact_grains(scene.bar, scene.bar_pose(), scene.block, scene.block_pose(), 0.05, ws, 0.0);
+  ASSERT_EQ(without.count, 1);
+  EXPECT_NEAR(without[0].gap, scene.gap, kTol);
+  for (const bool swapped : {false, true}) {
+    const auto set = swapped ? contact_grains(scene.block, scene.block_pose(), scene.bar, scene.bar_pose(), 0.05, ws)
+                             : contact_grains(scene.bar, scene.bar_pose(), scene.block, scene.block_pose(), 0.05, ws);
+    ASSERT_EQ(set.count, 2) << "swapped " << swapped;
+    const Vec3 normal = swapped ? Vec3(-scene.normal()) : scene.normal();
+    for (const auto &p : set) {
+      EXPECT_NEAR((p.normal - normal).norm(), 0.0, 1e-9);
+      EXPECT_EQ(feature_type(key_feature_i(p.key)), FeatureType::Edge);
+      EXPECT_EQ(feature_type(key_feature_j(p.key)), FeatureType::Edge);
+    }
+    EXPECT_NEAR(std::min(set[0].gap, set[1].gap), scene.gap, kTol);
+    EXPECT_NEAR(std::max(set[0].gap, set[1].gap), upper, kTol);
+  }
+  // Beyond the speculative distance (what the pair can close in the step), only the closest.
+  EXPECT_EQ(contact_grains(scene.bar, scene.bar_pose(), scene.block, scene.block_pose(), 0.05, ws, 0.5 * upper).count, 1);
+  EXPECT_THROW(contact_grains(scene.bar, scene.bar_pose(), scene.block, scene.block_pose(), 0.05, ws, std::nan("")),
+               ContactError);
 }
 
 // Box i standing on a corner: 1 point under the corner.
