@@ -49,3 +49,5 @@ for c in ${@:-1e3 1e4 1e5 1e3x2 1e4x2 1e3x4 1e4x4}; do
   *) echo "unknown case $c"; exit 2 ;;
   esac
 done
+# per-step and per-sweep cost of every run in WORK (fit.py)
+/usr/bin/python3 fit.py "$WORK"/1e*_np*.log | tee -a "$WORK/summary.txt"
