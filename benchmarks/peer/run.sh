@@ -10,6 +10,8 @@
 #            default, and with overlap_speed 0.2
 #   bodypour BODY pours them at BODY_DT (1e-3) for POUR_TIME time units
 #   scan     BODY pours them at DTS (default "4e-3 2e-3") for POUR_TIME: its largest usable dt
+#   stiff    the pour to STIFF_TIME (1.5): fix nscd (default, overlap_speed 0.2), BODY with
+#            k_n = 1e4 at dt 1e-3 and k_n = 1e5 (c_n 158, c_t 39.5: the same damping ratios) at dt 5e-4
 #   settle   fix nscd, overlap_speed 0.2, 2 x 6 time units -> settled.data (a settled pile), settled.body
 #   settled  the settled pile for TIME (1) time unit: fix nscd at dt 0.005, BODY at BODY_DT
 #            (BODY crashes on it: doc/BENCHMARKS.md)
@@ -67,6 +69,12 @@ for stage in ${@:-setup pour bodypour}; do
     for dt in ${DTS:-4e-3 2e-3}; do
       body_run "body_scan_dt$dt" "$WORK/peer.body" -var dt "$dt" -var time "${POUR_TIME:-3}" -var thermo_every 0.05 ${BODY_VARS:-}
     done ;;
+  stiff)
+    t=${STIFF_TIME:-1.5}
+    nscd_run "nscd_pour_t$t" -var time "$t"
+    nscd_run "nscd_pour_push_t$t" -var time "$t" -var solver "overlap_speed 0.2"
+    body_run "body_pour_k1e4_t$t" "$WORK/peer.body" -var dt 1e-3 -var time "$t"
+    body_run "body_pour_k1e5_t$t" "$WORK/peer.body" -var dt 5e-4 -var time "$t" -var kn 1e5 -var cn 158 -var ct 39.5 ;;
   settle)
     nscd_run nscd_settle1 -var time 6 -var solver "overlap_speed 0.2"
     nscd_run nscd_settle2 -var time 6 -var solver "overlap_speed 0.2" -var data "$WORK/nscd_settle1.data"
