@@ -241,7 +241,9 @@ LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Ve
 Vec3 project_on_coulomb_cone(const Vec3 &x, double mu)
 {
   const double tangential = tangential_norm(x);
-  if (tangential <= mu * x[0]) return x;
+  // x[0] >= 0 matters for mu = 0 only: with no tangential part, 0 <= 0 * x[0] holds for a
+  // negative x[0] too, and that x is not on the cone (the ray P_t = 0, P_n >= 0).
+  if (x[0] >= 0.0 && tangential <= mu * x[0]) return x;
   if (mu * tangential <= -x[0]) return Vec3::Zero();
   const double normal = (x[0] + mu * tangential) / (1.0 + mu * mu);
   const double ratio = mu * normal / tangential;

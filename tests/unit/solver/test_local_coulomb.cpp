@@ -164,3 +164,15 @@ TEST(LocalCoulomb, ConeProjection)
   EXPECT_NEAR(std::hypot(p[1], p[2]), mu * p[0], 1e-15);
   EXPECT_NEAR((x - p).dot(p), 0.0, 1e-14);
 }
+
+TEST(LocalCoulomb, FrictionlessConeIsTheNormalRay)
+{
+  // mu = 0: the cone is {P_t = 0, P_n >= 0}; a separating velocity with no tangential part
+  // (a grain falling straight onto a frictionless floor) projects to 0, not to itself, so
+  // that the De Saxce residual of an open contact is 0.
+  EXPECT_EQ(project_on_coulomb_cone(Vec3(-1.0, 0.0, 0.0), 0.0), Vec3::Zero());
+  EXPECT_EQ(project_on_coulomb_cone(Vec3(2.0, 0.0, 0.0), 0.0), Vec3(2.0, 0.0, 0.0));
+  EXPECT_EQ(project_on_coulomb_cone(Vec3(2.0, 0.5, -0.5), 0.0), Vec3(2.0, 0.0, 0.0));
+  const Mat3 W = Mat3::Identity();
+  EXPECT_EQ(coulomb_residual(W, Vec3(3.0, 0.0, 0.0), 0.0, Vec3::Zero(), 1.0), 0.0);
+}

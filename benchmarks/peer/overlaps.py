@@ -1,0 +1,32 @@
+#!/usr/bin/python3
+"""Largest overlap between grains and with the walls, from the last snapshot of the dump
+local written by in.overlap (columns: atom i, atom j or -k for the k-th wall, gap).
+
+    overlaps.py CONTACTS_DUMP [r]      (r: rounding radius, the unit of the printout; 0.05)
+"""
+import sys
+
+import numpy as np
+
+
+def last_snapshot(path):
+    lines = open(path).read().split('\n')
+    start = max(i for i, line in enumerate(lines) if line.startswith('ITEM: TIMESTEP'))
+    n = int(lines[start + 3])
+    return np.array([[float(c) for c in line.split()] for line in lines[start + 9:start + 9 + n]]).reshape(-1, 3)
+
+
+def main(path, r=0.05):
+    rows = last_snapshot(path)
+    pairs, walls = rows[rows[:, 1] > 0], rows[rows[:, 1] < 0]
+    def worst(part):
+        return max(0.0, -part[:, 2].min()) / r if len(part) else 0.0
+    n_over = int((pairs[:, 2] < -0.1 * r).sum()) if len(pairs) else 0
+    print(f'{path}: largest overlap grain-grain {worst(pairs):.4f} r, grain-wall {worst(walls):.4f} r; '
+          f'{n_over} grain-grain contact points overlap by more than 0.1 r')
+
+
+if __name__ == '__main__':
+    if len(sys.argv) not in (2, 3):
+        sys.exit(__doc__)
+    main(sys.argv[1], *(float(a) for a in sys.argv[2:]))

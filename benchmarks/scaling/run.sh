@@ -1,0 +1,53 @@
+#!/bin/bash
+# Scaling of fix nscd (issue 14, item 6): a settled periodic bed of 1008 random grains
+# (in.bed_settle, built once per WORK), replicated to ~10^4 and ~10^5 grains (in.bed_run), run
+# on 1, 2 and 4 MPI ranks. Prints one line per run (also to WORK/summary.txt): grains, ranks,
+# ms per step (Loop time of the measured run / steps), mean sweeps, residual, overlap,
+# floor error, and the peak resident memory of each rank (/usr/bin/time %M, kB).
+#
+#   benchmarks/scaling/run.sh [case ...]   (LMP=build/lmp, WORK=/tmp/scaling, STEPS=30)
+# Cases (default all): 1e3, 1e4, 1e5 (1 rank), 1e3x2, 1e4x2 (2 ranks), 1e3x4, 1e4x4 (4 ranks,
+# oversubscribed on a 2-core machine: their sweeps count, their times do not).
+set -e
+cd "$(dirname "$0")"
+LMP=$(realpath "${LMP:-../../build/lmp}")
+WORK=${WORK:-/tmp/scaling}
+STEPS=${STEPS:-30}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p "$WORK"
+[ -f "$WORK/bed.restart" ] || "$LMP" -in in.bed_settle -var dir "$WORK" -log "$WORK/bed_settle.log" > /dev/null
+
+run() {    # name ranks rx ry [lmp vars]
+  local name=$1 np=$2 rx=$3 ry=$4; shift 4
+  local log=$WORK/$name.log
+  rm -f "$WORK/$name".rss.*
+  # each rank under /usr/bin/time, writing its peak resident memory to name.rss.<rank>
+  mpiexec --oversubscribe -np "$np" bash -c 'exec /usr/bin/time -f "rss_kb %M" -o "$0.rss.$OMPI_COMM_WORLD_RANK" "$@"' \
+    "$WORK/$name" "$LMP" -in in.bed_run -var dir "$WORK" -var rx "$rx" -var ry "$ry" -var steps "$STEPS" "$@" -log "$log" > /dev/null
+  local loop ms rss
+  loop=$(grep "^Loop time" "$log" | tail -1 | awk '{print $4}')
+  ms=$(awk -v t="$loop" -v n="$STEPS" 'BEGIN {printf "%.1f", 1000 * t / n}')
+  rss=$(cat "$WORK/$name".rss.* | awk '{printf "%s%d", (NR > 1 ? " " : ""), $2}')
+  # the measured run's breakdown: contact detection (Pair) and fix nscd (Modify), ms per step
+  local pair modify
+  pair=$(grep "^Pair  " "$log" | tail -1 | awk -v n="$STEPS" '{printf "%.1f", 1000 * $5 / n}')
+  modify=$(grep "^Modify" "$log" | tail -1 | awk -v n="$STEPS" '{printf "%.1f", 1000 * $5 / n}')
+  local first; first=$(grep -A2 "^ *Step" "$log" | awk "NR == 3 {print \$2}")
+  echo "$name: ms/step $ms (pair $pair, fix $modify); rss_kb per rank $rss; first step sweeps $first; $(grep '^scaling:' "$log" | sed 's/^scaling: //')" | tee -a "$WORK/summary.txt"
+  echo "  command: (cd benchmarks/scaling && mpiexec -np $np ../../build/lmp -in in.bed_run -var dir WORK -var rx $rx -var ry $ry -var steps $STEPS $*)" | tee -a "$WORK/summary.txt"
+}
+
+for c in ${@:-1e3 1e4 1e5 1e3x2 1e4x2 1e3x4 1e4x4}; do
+  case $c in
+  1e3) run 1e3_np1 1 1 1 ;;
+  1e4) run 1e4_np1 1 10 1 ;;
+  1e5) run 1e5_np1 1 10 10 ;;
+  1e3x2) run 1e3_np2 2 1 1 ;;
+  1e4x2) run 1e4_np2 2 10 1 ;;
+  1e3x4) run 1e3_np4 4 1 1 ;;
+  1e4x4) run 1e4_np4 4 10 1 ;;
+  *) echo "unknown case $c"; exit 2 ;;
+  esac
+done
+# per-step and per-sweep cost of every run in WORK (fit.py)
+/usr/bin/python3 fit.py "$WORK"/1e*_np*.log | tee -a "$WORK/summary.txt"
