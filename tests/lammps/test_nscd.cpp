@@ -842,7 +842,14 @@ TEST_F(NSCDTest, AcceleratedMethodsCarryTheStackLikeGaussSeidel)
 // on 1 rank: grains 4e-5, pairs 2e-4 at most. Pair forces are statically indeterminate in a
 // pile (friction, several neighbours), so they agree only because both solves start from
 // the same warm start; at 1e-9 (plain Gauss-Seidel stalls near 2e-7 on this pile) pairs
-// differed by up to 0.3 mean weights while the grains' totals agreed to 1.3e-5.
+// differed by up to 0.3 mean weights while the grains' totals agreed to 1.3e-5. The coarse
+// correction moves the impulses of whole groups of contacts at once and so can leave the
+// warm start's neighbourhood for another solution of the same pile: since the speculative
+// edge crossings (which settle this pour into a harder pile: 15231 sweeps of plain GS from
+// the warm start, 948 before) its pairs differ from plain GS by 1.7e-2 (1 rank) and 1.3e-2
+// (2 ranks) mean weights while its grains' totals agree to 2e-5, so for it only the grains'
+// totals are compared. The unique answers (the stack above; stack, incline and pyramid in
+// tests/unit/solver/test_acceleration.cpp) are compared for every method.
 TEST_F(NSCDTest, AcceleratedMethodsGiveGaussSeidelsPileForces)
 {
   const std::vector<std::string> walls = small_pile_box();
@@ -903,7 +910,8 @@ TEST_F(NSCDTest, AcceleratedMethodsGiveGaussSeidelsPileForces)
                   "of a pair's %.2e mean weights\n", method.c_str(), grains / mean_weight,
                   pairs / mean_weight);
     EXPECT_LT(grains, 1e-3 * mean_weight) << method;
-    EXPECT_LT(pairs, 2e-3 * mean_weight) << method;
+    const bool stays_near_the_warm_start = method.find("coarse") == std::string::npos;
+    if (stays_near_the_warm_start) EXPECT_LT(pairs, 2e-3 * mean_weight) << method;
   }
 }
 
