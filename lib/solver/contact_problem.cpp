@@ -11,6 +11,9 @@
 namespace nscd {
 namespace {
 
+// Velocity errors below this fraction of a contact's own velocities are round-off.
+constexpr double kRoundOffVelocity = 1e-12;
+
 std::string contact_label(std::size_t index) { return "contact " + std::to_string(index); }
 
 // Orthonormal basis (n, t1, t2) from a unit n without branches on its components' size
@@ -419,7 +422,11 @@ ResidualTerms ContactProblem::residual_terms() const
     const Vec3 u = local_velocity(row);
     const Vec3 u_free = u - row.delassus * row.impulse;
     const double scale = row.delassus(0, 0);
-    const double error = coulomb_residual(row.delassus, u_free, row.mu, row.impulse, scale);
+    double error = coulomb_residual(row.delassus, u_free, row.mu, row.impulse, scale);
+    // An error at the round-off of the contact's own velocities is none: when every impulse
+    // is itself round-off (a pair that needs no push), error / scale would be a ratio of two
+    // round-offs and hold the solve until max_sweeps. (NaN stays NaN.)
+    if (error <= kRoundOffVelocity * (u_free.norm() + std::abs(row.normal_shift))) error = 0.0;
     terms.error_squared += error * error;
     terms.scale_squared += (scale * row.impulse).squaredNorm();
 
