@@ -46,6 +46,12 @@ TrigPolynomial2 slip_direction_condition(const Mat3 &W, const Vec3 &a, double mu
   return g;
 }
 
+// A slip direction (cos phi, sin phi) in the tangent plane.
+struct Direction {
+  double c = 1.0, s = 0.0;
+};
+using Directions = std::array<Direction, 4>;
+
 // Real roots of g on [0, 2 pi): with z = exp(i phi), z^2 g(phi) is a polynomial of degree
 // 4 in z whose roots on the unit circle are the wanted angles. Its coefficients are
 // conjugate-symmetric, so the degree drops to 2 exactly when a2 = b2 = 0 (the common case
@@ -92,47 +98,67 @@ int candidate_slip_angles(const TrigPolynomial2 &g, std::array<double, 4> &angle
 // Fast path: sign changes of g on 16 sample angles bracket its simple roots, each refined
 // by Newton safeguarded with bisection. Roots closer together than the sample spacing
 // (near-tangent cases) can be missed; the caller then falls back to the companion matrix.
-int bracketed_slip_angles(const TrigPolynomial2 &g, std::array<double, 4> &angles)
+// No sine or cosine is evaluated here (they were 16 % of a sliding wire run): within a
+// bracket, phi = middle + psi with t = tan(psi / 2), and the direction is the middle's
+// turned by cos psi = (1 - t^2) / (1 + t^2), sin psi = 2 t / (1 + t^2); Newton runs on t.
+int bracketed_slip_directions(const TrigPolynomial2 &g, Directions &directions)
 {
   constexpr int n_samples = 16;
   constexpr double spacing = 2.0 * 3.14159265358979323846 / n_samples;
-  static const std::array<std::array<double, 2>, n_samples> directions = [] {
-    std::array<std::array<double, 2>, n_samples> table;
-    for (int k = 0; k < n_samples; ++k) table[k] = {std::cos(k * spacing), std::sin(k * spacing)};
+  struct Samples {
+    std::array<Direction, n_samples> at, middle;    // at k spacing and (k + 1/2) spacing
+    double t_edge;                                  // tan(spacing / 4): t at a bracket's ends
+  };
+  static const Samples samples = [] {
+    Samples table;
+    for (int k = 0; k < n_samples; ++k) {
+      table.at[k] = {std::cos(k * spacing), std::sin(k * spacing)};
+      table.middle[k] = {std::cos((k + 0.5) * spacing), std::sin((k + 0.5) * spacing)};
+    }
+    table.t_edge = std::tan(0.25 * spacing);
     return table;
   }();
   std::array<double, n_samples + 1> values;
-  for (int k = 0; k < n_samples; ++k) values[k] = g.value(directions[k][0], directions[k][1]);
+  for (int k = 0; k < n_samples; ++k) values[k] = g.value(samples.at[k].c, samples.at[k].s);
   values[n_samples] = values[0];
 
-  int n_angles = 0;
-  for (int k = 0; k < n_samples && n_angles < 4; ++k) {
+  int n_found = 0;
+  for (int k = 0; k < n_samples && n_found < 4; ++k) {
     if (values[k] == 0.0) {
-      angles[n_angles++] = k * spacing;
+      directions[n_found++] = samples.at[k];
       continue;
     }
     if ((values[k] > 0.0) == (values[k + 1] > 0.0) || values[k + 1] == 0.0) continue;
-    double low = k * spacing, high = low + spacing;
+    const Direction middle = samples.middle[k];
+    const auto turned = [&middle](double t) {
+      const double scale = 1.0 / (1.0 + t * t);
+      const double cos_psi = (1.0 - t * t) * scale, sin_psi = 2.0 * t * scale;
+      return Direction{middle.c * cos_psi - middle.s * sin_psi,
+                       middle.s * cos_psi + middle.c * sin_psi};
+    };
+    double low = -samples.t_edge, high = samples.t_edge;
     const bool rising = values[k] < 0.0;
-    // Start from the secant through the bracket ends (closer than the midpoint).
-    double phi = low + spacing * values[k] / (values[k] - values[k + 1]);
+    // Start from the secant through the bracket ends (closer than the middle): psi / 2 is
+    // within the bracket as |psi / 2| < tan(spacing / 4).
+    double t = 0.5 * spacing * (values[k] / (values[k] - values[k + 1]) - 0.5);
+    Direction d = turned(t);
     for (int iteration = 0; iteration < 60; ++iteration) {
-      const double c = std::cos(phi), s = std::sin(phi);
-      const double value = g.value(c, s);
+      const double value = g.value(d.c, d.s);
       if (value == 0.0) break;
-      if ((value < 0.0) == rising) low = phi; else high = phi;
-      const double slope = g.derivative(c, s);
+      if ((value < 0.0) == rising) low = t; else high = t;
+      const double slope = g.derivative(d.c, d.s) * 2.0 / (1.0 + t * t);    // dg/dt
       const double newton_step = slope != 0.0 ? -value / slope : high - low;
-      if (std::abs(newton_step) <= 1e-15 * (1.0 + std::abs(phi))) {
-        phi += newton_step;    // converged: the step is below round-off of phi
+      if (std::abs(newton_step) <= 0.5e-15) {
+        d = turned(t + newton_step);    // converged: the step is below round-off of phi
         break;
       }
-      const double next = phi + newton_step;
-      phi = next > low && next < high ? next : 0.5 * (low + high);
+      const double next = t + newton_step;
+      t = next > low && next < high ? next : 0.5 * (low + high);
+      d = turned(t);
     }
-    angles[n_angles++] = phi;
+    directions[n_found++] = d;
   }
-  return n_angles;
+  return n_found;
 }
 
 double polish_root(const TrigPolynomial2 &g, double phi)
@@ -152,11 +178,11 @@ struct SlipCandidate {
   bool admissible = false;
 };
 
-// Checks the sliding conditions along angle phi: D > 0 (so P_n > 0), u_t parallel to s
-// and pointing along s (slip velocity sigma >= 0, up to round-off).
-SlipCandidate evaluate_slip(const Mat3 &W, const Vec3 &a, double mu, double phi)
+// Checks the sliding conditions along direction (c, s): D > 0 (so P_n > 0), u_t parallel
+// to it and pointing along it (slip velocity sigma >= 0, up to round-off).
+SlipCandidate evaluate_slip(const Mat3 &W, const Vec3 &a, double mu, Direction d)
 {
-  const double c = std::cos(phi), s = std::sin(phi);
+  const double c = d.c, s = d.s;
   const Vec3 direction(1.0, -mu * c, -mu * s);
   const Vec3 W_direction = W * direction;
   SlipCandidate candidate;
@@ -174,14 +200,14 @@ SlipCandidate evaluate_slip(const Mat3 &W, const Vec3 &a, double mu, double phi)
   return candidate;
 }
 
-// The admissible slip solution with the smallest normal impulse among the given angles;
-// returns false if none is admissible.
-bool best_slip(const Mat3 &W, const Vec3 &u_free, double mu, const std::array<double, 4> &angles,
-               int n_angles, Vec3 &impulse)
+// The admissible slip solution with the smallest normal impulse among the given
+// directions; returns false if none is admissible.
+bool best_slip(const Mat3 &W, const Vec3 &u_free, double mu, const Directions &directions,
+               int n_directions, Vec3 &impulse)
 {
   double best_normal = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < n_angles; ++k) {
-    const SlipCandidate candidate = evaluate_slip(W, u_free, mu, angles[k]);
+  for (int k = 0; k < n_directions; ++k) {
+    const SlipCandidate candidate = evaluate_slip(W, u_free, mu, directions[k]);
     if (candidate.admissible && candidate.impulse[0] < best_normal) {
       best_normal = candidate.impulse[0];
       impulse = candidate.impulse;
@@ -195,13 +221,18 @@ LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_fre
   const TrigPolynomial2 g = slip_direction_condition(W, u_free, mu);
   LocalSolution best;
   best.regime = ContactRegime::slip;
-  std::array<double, 4> angles;
-  int n_angles = bracketed_slip_angles(g, angles);
-  if (best_slip(W, u_free, mu, angles, n_angles, best.impulse)) return best;
+  Directions directions;
+  int n_directions = bracketed_slip_directions(g, directions);
+  if (best_slip(W, u_free, mu, directions, n_directions, best.impulse)) return best;
 
-  n_angles = candidate_slip_angles(g, angles);
-  for (int k = 0; k < n_angles; ++k) angles[k] = polish_root(g, angles[k]);
-  if (!best_slip(W, u_free, mu, angles, n_angles, best.impulse)) {
+  // Fallback (near-tangent roots): all roots from the companion matrix, polished.
+  std::array<double, 4> angles;
+  n_directions = candidate_slip_angles(g, angles);
+  for (int k = 0; k < n_directions; ++k) {
+    const double phi = polish_root(g, angles[k]);
+    directions[k] = {std::cos(phi), std::sin(phi)};
+  }
+  if (!best_slip(W, u_free, mu, directions, n_directions, best.impulse)) {
     best.impulse = project_on_coulomb_cone(-(W_inverse * u_free), mu);
     best.exact = false;
   }
