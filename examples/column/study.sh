@@ -2,11 +2,13 @@
 # Parameter study of the wire column (the papers' Ref. [12] question: what keeps it up?):
 # one parameter at a time around the deck's defaults, a small column each, through all
 # phases of in.column. Writes study/study.csv and study/study.md (height and retained
-# fraction before/after the wall removal, wire stretch energy at rest, plate force at failure).
+# fraction before the wall removal and after it and the relaxation, wire stretch energy at
+# rest, plate force at failure).
 #
 #   examples/column/study.sh                       # from anywhere; LMP=path/to/lmp to choose
 #   SIZE="-var layers 5 -var R 2 -var cells 2" examples/column/study.sh    # another size
-#   MU_PW="0.2 0.8" K_ELO="1000 10000" MU_PP="0.3 0.8" examples/column/study.sh
+#   MU_PW="0.2 0.8" K_ELO="1000 10000" MU_PP="0.3 0.8" K_ROT="0.1 10" examples/column/study.sh
+#   SEEDS="2026 7 11" examples/column/study.sh     # every point once per seed (deposits differ)
 #   LAUNCH="mpiexec -np 2" examples/column/study.sh
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -14,6 +16,7 @@ lmp=${LMP:-$here/../../build/lmp}
 read -r -a launch <<< "${LAUNCH:-}"
 read -r -a size <<< "${SIZE:--var layers 3 -var R 2.5 -var window cylinder -var cells 2 -var element 0.3 -var layer_steps 400 -var wire_steps 100 -var relax_chunk 250 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.6 -var seat_steps 100 -var load_chunk 100 -var load_max 20 -var load_rate 20 -var dump_every 100000}"
 mu_pw=(${MU_PW:-0.2 0.8}); k_elo=(${K_ELO:-1000 10000}); mu_pp=(${MU_PP:-0.3 0.8})    # around 0.5, 5000, 0.5
+k_rot=(${K_ROT:-}); seeds=(${SEEDS:-2026})                                              # k_rot: none by default
 out=${OUT:-$PWD/study}
 mkdir -p "$out"
 cd "$out"
@@ -22,30 +25,33 @@ runs=("base:")
 for v in "${mu_pw[@]}"; do runs+=("mu_pw:$v"); done
 for v in "${k_elo[@]}"; do runs+=("k_elo:$v"); done
 for v in "${mu_pp[@]}"; do runs+=("mu_pp:$v"); done
+for v in "${k_rot[@]}"; do runs+=("k_rot:$v"); done
 
 field() {    # FILE REGEX: the first group of REGEX in FILE
   sed -nE "s/$2/\1/p" "$1" | head -n 1
 }
-echo "parameter,value,height_before,height_after,retained_before,retained_after,stretch_energy_at_rest,failure_load,peak_plate_force,wall_s" > study.csv
+echo "parameter,value,seed,height_before,height_after,retained_before,retained_after,stretch_energy_at_rest,failure_load,peak_plate_force,wall_s" > study.csv
+for seed in "${seeds[@]}"; do
 for run in "${runs[@]}"; do
   param=${run%%:*} value=${run#*:}
-  name=$param${value:+_$value}
-  extra=()
-  [ -n "$value" ] && extra=(-var "$param" "$value")
+  name=$param${value:+_$value}_seed$seed
+  extra=(-var seed "$seed")
+  [ -n "$value" ] && extra+=(-var "$param" "$value")
   t0=$SECONDS
   "${launch[@]}" "$lmp" -in "$here/in.column" -log "log.$name" -var name "$name" "${size[@]}" "${extra[@]}" > "screen.$name.txt"
   log=log.$name
-  h_after=$(field "$log" '^phase 3 done: height ([^ ]+) \(before.*')
+  h_after=$(field "$log" '^phase 4 done: height ([^,]+),.*')        # after the walls and the relaxation
   h_before=$(field "$log" '^phase 3 done: height [^ ]+ \(before ([^)]+)\).*')
-  f_after=$(field "$log" '^phase 3 done:.*retained fraction ([^ ]+) \(before.*')
+  f_after=$(field "$log" '^phase 4 done:.*retained fraction ([^,]+),.*')
   f_before=$(field "$log" '^phase 3 done:.*retained fraction [^ ]+ \(before ([^)]+)\).*')
   stretch=$(field "$log" '^phase 4 done:.*wire stretch energy ([^,]+),.*')
   load=$(field "$log" '^phase 5 done: load ([^,]+),.*')
   grep -q "^phase 5: no failure" "$log" && load=">$load (no failure)"
   peak=$(field "$log" '^phase 5 done:.*peak of the checks ([^)]+)\).*')
   [ -n "$value" ] || { param=defaults; value=-; }
-  echo "$param,$value,$h_before,$h_after,$f_before,$f_after,$stretch,$load,$peak,$(( SECONDS - t0 ))" >> study.csv
+  echo "$param,$value,$seed,$h_before,$h_after,$f_before,$f_after,$stretch,$load,$peak,$(( SECONDS - t0 ))" >> study.csv
   echo "study: $name done in $(( SECONDS - t0 )) s"
+done
 done
 
 /usr/bin/python3 - study.csv > study.md <<'EOF'
@@ -56,16 +62,33 @@ def g(x, fmt="{:.3f}"):
         return fmt.format(float(x))
     except ValueError:
         return x or "-"    # e.g. ">200 (no failure)"
-print("| parameter | value | height before -> after walls | retained before -> after | kept (after/before) | stretch energy at rest | load at failure | peak plate force | wall s |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("| parameter | value | seed | height before -> after walls | retained before -> after | kept (after/before) | stretch energy at rest | load at failure | peak plate force | wall s |")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for r in rows:
     try:
         kept = "{:.2f}".format(float(r["retained_after"]) / float(r["retained_before"]))
     except (ValueError, ZeroDivisionError):
         kept = "-"
-    print(f"| {r['parameter']} | {r['value']} | {g(r['height_before'])} -> {g(r['height_after'])} | "
+    print(f"| {r['parameter']} | {r['value']} | {r['seed']} | {g(r['height_before'])} -> {g(r['height_after'])} | "
           f"{g(r['retained_before'])} -> {g(r['retained_after'])} | {kept} | {g(r['stretch_energy_at_rest'], '{:.3g}')} | "
           f"{g(r['failure_load'], '{:.1f}')} | {g(r['peak_plate_force'], '{:.1f}')} | {r['wall_s']} |")
+# with several seeds: each point's mean over the seeds, the seeds' scatter beside it
+points = {}
+for r in rows:
+    try:
+        h = float(r["height_after"]) / float(r["height_before"])
+        f = float(r["retained_after"]) / float(r["retained_before"])
+    except (ValueError, ZeroDivisionError):
+        continue
+    points.setdefault((r["parameter"], r["value"]), []).append((h, f))
+if any(len(v) > 1 for v in points.values()):
+    print()
+    print("| parameter | value | seeds | height kept (mean, min-max) | grains kept (mean, min-max) |")
+    print("|---|---|---|---|---|")
+    for (param, value), v in points.items():
+        hs, fs = [x[0] for x in v], [x[1] for x in v]
+        print(f"| {param} | {value} | {len(v)} | {sum(hs)/len(hs):.2f} ({min(hs):.2f}-{max(hs):.2f}) | "
+              f"{sum(fs)/len(fs):.2f} ({min(fs):.2f}-{max(fs):.2f}) |")
 EOF
 cat study.md
 echo "study: tables in $out/study.csv and $out/study.md"
