@@ -8,9 +8,9 @@ import sys
 
 import numpy as np
 
-from . import cylinder, fabric, forces, logs, vtk, wire_contacts
+from . import cylinder, fabric, forces, logs, vtk, wire_contacts, wire_loops
 from .dumps import DumpError, read_dumps
-from .layouts import FABRIC, WIRE_GRAIN
+from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
 
 DPI = 100
 
@@ -348,6 +348,57 @@ def cmd_vtk_wire(args):
         raise SystemExit("nscd-analysis: no step with both element rows and node positions")
 
 
+# --- wire-loops: how taut each loop is ---------------------------------------------------
+
+LOOP_FIELDS = ("nodes", "z_mean", "r_median", "turns", "length", "horizontal_length", "circle", "slack")
+
+
+def cmd_wire_loops(args):
+    nodes = {s.timestep: s for s in read_dumps(args.nodes)}
+    rows, series = [], []
+    for elements in read_dumps(args.elements, args.steps, args.last):
+        if elements.timestep not in nodes:
+            print(f"nscd-analysis: step {elements.timestep}: no node positions in {' '.join(args.nodes)}; skipped",
+                  file=sys.stderr)
+            continue
+        snapshot = nodes[elements.timestep]
+        ids = snapshot.column("id").astype(np.int64)
+        positions = np.column_stack([snapshot.first_column(n) for n in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
+        row_of = {int(t): k for k, t in enumerate(ids)}
+        found = wire_loops.chains(elements.column("id1", WIRE_ELEMENTS), elements.column("id2", WIRE_ELEMENTS))
+        step_rows = []
+        for path, closed in found:
+            missing = [t for t in path if t not in row_of]
+            if missing:
+                raise DumpError(f"{snapshot.source} step {snapshot.timestep}: no position for wire node IDs "
+                                f"{missing[:10]} (dump the wire's group)")
+            m = wire_loops.loop_measures(positions[[row_of[t] for t in path]], closed, args.axis)
+            step_rows.append([elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS])
+        rows += step_rows
+        series.append((elements.timestep, step_rows))
+        print(f"step {elements.timestep}: {len(step_rows)} chains, slack median "
+              f"{np.median([r[-1] for r in step_rows]):.3f} (min {min(r[-1] for r in step_rows):.3f}, "
+              f"max {max(r[-1] for r in step_rows):.3f}), median radius "
+              f"{np.median([r[5] for r in step_rows]):.3f}")
+    if not rows:
+        raise SystemExit("nscd-analysis: no step with both element rows and node positions")
+    print(_write_csv(args.out, ["step", "first_id", "kind"] + list(LOOP_FIELDS), rows,
+                     [f"wire chains about the vertical axis through {tuple(args.axis)}; slack = length / "
+                      "(r_median x angle spanned) - 1"]))
+    plt = _pyplot()
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
+    for step, step_rows in series:
+        z = [r[4] for r in step_rows]
+        left.plot([r[-1] for r in step_rows], z, "o-", label=f"step {step}")
+        right.plot([r[5] for r in step_rows], z, "o-", label=f"step {step}")
+    left.set_xlabel("slack (length / circle - 1)")
+    left.set_ylabel("mean height of the loop")
+    right.set_xlabel("median radius of the loop")
+    left.legend(fontsize=8)
+    fig.tight_layout()
+    print(_save(fig, args.out))
+
+
 # --- argument parsing -------------------------------------------------------------------------
 
 def _common(p, axis=True, bins=True):
@@ -423,6 +474,16 @@ def parser():
     p.add_argument("--with-boundaries", action="store_true", help="also grain-wall/plate pairs")
     p.add_argument("--reference-force", type=float, help="fn_norm = fn / this (default: the step's largest fn)")
     p.set_defaults(func=cmd_vtk_network)
+
+    p = sub.add_parser("wire-loops", help="how taut each wire loop is: radius, turns spanned, length, slack")
+    p.add_argument("--elements", nargs="+", required=True, help="dump local files of compute wire/local")
+    p.add_argument("--nodes", nargs="+", required=True, help="dump custom files with id x y z of the wire nodes")
+    p.add_argument("--axis", type=float, nargs=2, default=(0.0, 0.0), metavar=("X", "Y"),
+                   help="vertical column axis through (X, Y) (default 0 0)")
+    p.add_argument("--out", "-o", required=True, help="output prefix: PREFIX.png and PREFIX.csv")
+    p.add_argument("--steps", type=int, nargs="+")
+    p.add_argument("--last", action="store_true")
+    p.set_defaults(func=cmd_wire_loops)
 
     p = sub.add_parser("vtk-wire", help="wire as .vtp line segments with per-element energy (one file per step)")
     p.add_argument("--elements", nargs="+", required=True, help="dump local files of compute wire/local")
