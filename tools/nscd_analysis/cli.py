@@ -366,6 +366,9 @@ def cmd_wire_loops(args):
         positions = np.column_stack([snapshot.first_column(n) for n in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
         row_of = {int(t): k for k, t in enumerate(ids)}
         found = wire_loops.chains(elements.column("id1", WIRE_ELEMENTS), elements.column("id2", WIRE_ELEMENTS))
+        if not found:
+            print(f"step {elements.timestep}: no wire elements")
+            continue
         step_rows = []
         for path, closed in found:
             missing = [t for t in path if t not in row_of]
