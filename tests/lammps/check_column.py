@@ -2,9 +2,9 @@
 """Checks of the 2-layer column smoke test (tests/lammps/run_example_check.sh column):
 the logs of examples/column/in.column with the wire (WIRE_LOG) and without (BARE_LOG).
 
-    check_column.py WIRE_LOG BARE_LOG
+    check_column.py WIRE_LOG BARE_LOG [RING_LOG]
 
-Fails (exit 1, naming the check) unless, in both runs:
+Fails (exit 1, naming the check) unless, in every run:
   * every phase ran (the deck's "phase N done" lines, N = 1..5);
   * no grain was ever deeper than r_w / 2 in another grain or a wall (thermo f_nscd[3]):
     new layers are created clear of the deposit and the solver keeps them apart;
@@ -18,6 +18,10 @@ and with the wire:
   * the wire carries tension after the walls are gone (stretch energy > 0);
   * the column keeps at least 90 % of its grains within the loop radius and of its height
     through the wall removal.
+and with closed rings (RING_LOG, `-var loop ring`):
+  * every loop is a closed ring whose elements are exactly the rest length of the bond type
+    (create_wire's element length against the bond_coeff the deck gave, to 1e-9): laid
+    unstrained.
 Two layers are too low to collapse without wire (both keep all their grains): the
 collapse of the control is shown at 5 layers in examples/column/README.md, not here.
 """
@@ -91,9 +95,28 @@ def walls(done):
     return float(h.group(2)), float(h.group(1)), float(f.group(2)), float(f.group(1))
 
 
+def check_rings(path):
+    """Every create_wire made a closed ring, its elements at the bond type's rest length."""
+    with open(path) as f:
+        text = f.read()
+    rests = re.findall(r"^bond_coeff 1 \S+ ([-+0-9.eE]+)\s*$", text, re.M)
+    made = re.findall(r"^create_wire: loop \(([^)]*)\): .* elements of length ([-+0-9.eE]+)", text, re.M)
+    check(len(rests) > 0 and len(made) > 0, f"ring: no bond_coeff ({len(rests)}) or create_wire ({len(made)}) line")
+    if rests and made:
+        rest = float(rests[-1])
+        kinds = sorted({kind for kind, _ in made})
+        worst = max(abs(float(length) / rest - 1) for _, length in made)
+        check(kinds == ["closed ring"], f"ring: create_wire made {kinds}, expected closed rings only")
+        check(worst < 1e-9, f"ring: elements differ from the rest length {rest} by up to {worst:.3g} (relative)")
+        print(f"rings: {len(made)} closed rings, elements at the rest length {rest:.10g} to {worst:.2g}")
+
+
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
+    if len(sys.argv) == 4:
+        check_run(sys.argv[3], "ring")
+        check_rings(sys.argv[3])
     wire_done = check_run(sys.argv[1], "wire")
     bare_done = check_run(sys.argv[2], "no wire")
     wire, bare = walls(wire_done), walls(bare_done)

@@ -21,17 +21,18 @@ case "$name" in
     [ "$polys" -gt 384 ] || { echo "grains.0.vtk has only '$polys' polygons"; exit 1; }
     ! grep -q "ERROR\|Lost atoms" log.lammps
     ;;
-  column)  # a 2-layer column through all five phases, with and without the wire (< 1 min)
+  column)  # a 2-layer column through all five phases: double loops, no wire, closed rings (< 1 min)
     small=(-var layers 2 -var R 2 -var element 0.3 -var layer_steps 300 -var wire_steps 100
            -var relax_chunk 200 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.6
            -var seat_steps 100 -var load_chunk 100 -var load_max 3 -var load_rate 20
            -var thermo_every 100 -var dump_every 100000)
     "${launch[@]}" "$lmp" -in "$deck" -log log.column "${small[@]}" > screen.txt
     "${launch[@]}" "$lmp" -in "$deck" -log log.bare "${small[@]}" -var wire no -var name bare > screen_bare.txt
+    "${launch[@]}" "$lmp" -in "$deck" -log log.ring "${small[@]}" -var loop ring -var name ring > screen_ring.txt
     for kind in grains.*.vtk fabric.*.dump pairs.*.dump wire.*.dump nodes.*.dump phase5.restart; do
       ls column.$kind > /dev/null || { echo "column: no column.$kind written"; exit 1; }
     done
-    /usr/bin/python3 "$here/check_column.py" log.column log.bare
+    /usr/bin/python3 "$here/check_column.py" log.column log.bare log.ring
     ;;
   *)       # validation decks: they print "check NAME: passed" or exit with status 1
     cp "$src"/*.shapes . 2>/dev/null || true
