@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Per-phase summary of a log of examples/column/in.column (or examples/silo/in.silo):
 steps, wall time (sum of the runs' "Loop time"), wall time per step, mean solver sweeps per
-step, fraction of unconverged steps, then the deck's "phase N done" lines.
+step, fraction of unconverged steps, then the deck's "phase N done" lines. A run still going
+(no "Loop time" yet) is left out, with a note.
 
     /usr/bin/python3 summary.py log.column [--csv out.csv]
 
@@ -27,9 +28,14 @@ def loop_times(path):
 def summarise(path):
     blocks = logs.read_thermo(path)
     loops = loop_times(path)
+    if len(blocks) == len(loops) + 1:
+        # a run still going (or stopped): the finished runs are summarised, the last left out
+        print(f"{path}: the last run has no 'Loop time' yet (still running or stopped); its "
+              f"{len(blocks[-1][1])} thermo rows are left out", file=sys.stderr)
+        blocks = blocks[:-1]
     if len(blocks) != len(loops):
         raise SystemExit(f"{path}: {len(blocks)} thermo blocks but {len(loops)} 'Loop time' lines "
-                         "(a run without thermo output, or an unfinished run)")
+                         "(a run without thermo output)")
     phases = {}
     for (columns, data), (seconds, steps) in zip(blocks, loops):
         if "v_phase" not in columns or not len(data):
@@ -59,6 +65,8 @@ def main():
     rows = []
     for phase in sorted(phases):
         p = phases[phase]
+        if not p["steps"]:
+            continue    # only a 'run 0' (e.g. the run left out above had the phase's steps)
         per_step = 1000 * p["seconds"] / p["steps"] if p["steps"] else float("nan")
         rows.append(f"{phase},{NAMES.get(phase, '?')},{p['steps']},{p['seconds']:.1f},{per_step:.1f},"
                     f"{mean(p['sweeps']):.1f},{mean(p['unconverged']):.3f}")
