@@ -62,7 +62,7 @@ def g(x, fmt="{:.3f}"):
         return fmt.format(float(x))
     except ValueError:
         return x or "-"    # e.g. ">200 (no failure)"
-print("| parameter | value | seed | height before -> after walls | retained before -> after | kept (after/before) | stretch energy at rest | load at failure | peak plate force | wall s |")
+print("| parameter | value | seed | height before walls -> after walls and relaxation | retained before -> after | kept (after/before) | stretch energy at rest | load at failure | peak plate force | wall s |")
 print("|---|---|---|---|---|---|---|---|---|---|")
 for r in rows:
     try:

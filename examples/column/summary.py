@@ -67,7 +67,7 @@ def main():
         p = phases[phase]
         if not p["steps"]:
             continue    # only a 'run 0' (e.g. the run left out above had the phase's steps)
-        per_step = 1000 * p["seconds"] / p["steps"] if p["steps"] else float("nan")
+        per_step = 1000 * p["seconds"] / p["steps"]
         rows.append(f"{phase},{NAMES.get(phase, '?')},{p['steps']},{p['seconds']:.1f},{per_step:.1f},"
                     f"{mean(p['sweeps']):.1f},{mean(p['unconverged']):.3f}")
     total_steps = sum(p["steps"] for p in phases.values())

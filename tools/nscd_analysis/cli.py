@@ -330,15 +330,21 @@ def cmd_vtk_network(args):
         print(path, f"{len(lines)} pairs")
 
 
-def cmd_vtk_wire(args):
+def _wire_steps(args):
+    """(elements, nodes) snapshots of the steps that both --elements and --nodes have."""
     nodes = {s.timestep: s for s in read_dumps(args.nodes)}
-    written = 0
     for elements in read_dumps(args.elements, args.steps, args.last):
         if elements.timestep not in nodes:
             print(f"nscd-analysis: step {elements.timestep}: no node positions in {' '.join(args.nodes)}; skipped",
                   file=sys.stderr)
             continue
-        points, lines, point_data, cells = vtk.wire(elements, nodes[elements.timestep], args.reference_energy)
+        yield elements, nodes[elements.timestep]
+
+
+def cmd_vtk_wire(args):
+    written = 0
+    for elements, nodes in _wire_steps(args):
+        points, lines, point_data, cells = vtk.wire(elements, nodes, args.reference_energy)
         path = f"{args.out}.{elements.timestep}.vtp"
         os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
         vtk.write_polydata(path, points, lines, point_data, cells)
@@ -354,28 +360,15 @@ LOOP_FIELDS = ("nodes", "z_mean", "r_median", "turns", "length", "horizontal_len
 
 
 def cmd_wire_loops(args):
-    nodes = {s.timestep: s for s in read_dumps(args.nodes)}
     rows, series = [], []
-    for elements in read_dumps(args.elements, args.steps, args.last):
-        if elements.timestep not in nodes:
-            print(f"nscd-analysis: step {elements.timestep}: no node positions in {' '.join(args.nodes)}; skipped",
-                  file=sys.stderr)
-            continue
-        snapshot = nodes[elements.timestep]
-        ids = snapshot.column("id").astype(np.int64)
-        positions = np.column_stack([snapshot.first_column(n) for n in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
-        row_of = {int(t): k for k, t in enumerate(ids)}
+    for elements, nodes in _wire_steps(args):
         found = wire_loops.chains(elements.column("id1", WIRE_ELEMENTS), elements.column("id2", WIRE_ELEMENTS))
         if not found:
             print(f"step {elements.timestep}: no wire elements")
             continue
         step_rows = []
         for path, closed in found:
-            missing = [t for t in path if t not in row_of]
-            if missing:
-                raise DumpError(f"{snapshot.source} step {snapshot.timestep}: no position for wire node IDs "
-                                f"{missing[:10]} (dump the wire's group)")
-            m = wire_loops.loop_measures(positions[[row_of[t] for t in path]], closed, args.axis)
+            m = wire_loops.loop_measures(nodes.positions_of(path, "wire node"), closed, args.axis)
             step_rows.append([elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS])
         rows += step_rows
         series.append((elements.timestep, step_rows))

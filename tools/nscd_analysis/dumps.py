@@ -68,6 +68,18 @@ class Snapshot:
         raise DumpError(f"{self.source}: none of the columns {', '.join(names)} in ITEM line "
                         f"({' '.join(self.columns)})")
 
+    def positions_of(self, ids, what="atom"):
+        """Positions (rows x 3) of the atoms with these IDs, in their order: unwrapped xu yu zu
+        if dumped (an element across a periodic boundary stays whole), else x y z. A missing ID
+        is named."""
+        row_of = {int(t): k for k, t in enumerate(self.column("id").astype(np.int64))}
+        missing = sorted({int(t) for t in ids if int(t) not in row_of})
+        if missing:
+            raise DumpError(f"{self.source} step {self.timestep}: no position for {what} IDs "
+                            f"{missing[:10]}{' ...' if len(missing) > 10 else ''} (dump the wire's group)")
+        positions = np.column_stack([self.first_column(n) for n in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
+        return positions[[row_of[int(t)] for t in ids]]
+
     def vectors(self, names, layout=None):
         """Columns side by side: vectors(('x', 'y', 'z')) -> rows x 3."""
         return np.column_stack([self.column(n, layout) for n in names]) if len(self) else np.zeros((0, len(names)))

@@ -79,18 +79,11 @@ def wire(elements, nodes, reference_energy=None):
     dump custom snapshot of the nodes (id and x y z, or xu yu zu: unwrapped positions keep an
     element that crosses a periodic boundary whole)."""
     layout = WIRE_ELEMENTS
-    node_ids = nodes.column("id").astype(np.int64)
-    positions = np.column_stack([nodes.first_column(names) for names in (("xu", "x"), ("yu", "y"), ("zu", "z"))])
-    row_of = {tag: k for k, tag in enumerate(node_ids)}
     id1 = elements.column("id1", layout).astype(np.int64)
     id2 = elements.column("id2", layout).astype(np.int64)
-    missing = sorted({int(t) for t in np.concatenate([id1, id2]) if t not in row_of})
-    if missing:
-        raise ValueError(f"{nodes.source} step {nodes.timestep}: no position for wire node IDs "
-                         f"{missing[:10]}{' ...' if len(missing) > 10 else ''} (dump the wire's group)")
     used = np.unique(np.concatenate([id1, id2]))
     index = {tag: k for k, tag in enumerate(used)}
-    points = positions[[row_of[t] for t in used]]
+    points = nodes.positions_of(used, "wire node")
     lines = np.array([[index[a], index[b]] for a, b in zip(id1, id2)], dtype=np.int64).reshape(-1, 2)
     energy = elements.column("energy", layout)
     cells = {"strain": elements.column("strain", layout), "tension": elements.column("tension", layout),
