@@ -114,7 +114,13 @@ void ContactProblem::build_groups()
   double lever = 0.0;
   for (const Contact &contact : contacts)
     lever += (contact.point - bodies[contact.body_i].position).norm();
-  const double size = options_.coarse_cell * 2.0 * lever / static_cast<double>(contacts.size());
+  double size = options_.coarse_cell * 2.0 * lever / static_cast<double>(contacts.size());
+  // Cells twice as wide (an eighth as many) until there are at most kMaxCoarseGroups.
+  while (group_contacts_by_cell(size) > kMaxCoarseGroups && size > 0.0) size *= 2.0;
+}
+
+int ContactProblem::group_contacts_by_cell(double size)
+{
   using Cell = std::array<long, 3>;
   std::vector<std::pair<Cell, int>> cells(contacts.size());
   for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -124,11 +130,12 @@ void ContactProblem::build_groups()
     cells[c] = {cell, static_cast<int>(c)};
   }
   std::sort(cells.begin(), cells.end());
+  group_count_ = 0;
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (k > 0 && cells[k].first != cells[k - 1].first) ++group_count_;
     group_[cells[k].second] = group_count_;
   }
-  ++group_count_;
+  return ++group_count_;
 }
 
 void ContactProblem::coarse_correction()

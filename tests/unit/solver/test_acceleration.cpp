@@ -236,6 +236,26 @@ TEST(Acceleration, CoarseCorrectionSolvesAStraightColumnInAFewSweeps)
   }
 }
 
+TEST(Acceleration, CoarseGroupsAreCappedOnATallColumn)
+{
+  // 301 contacts, one cell each at cell size 1: more than kMaxCoarseGroups, so the cells
+  // widen (2, 4, ...) until at most that many are left; the dense coarse system stays small
+  // and the solve still gives the weight above every contact.
+  const int layers = 300;
+  const double plate = 1000.0, dt = 1e-3;
+  ContactProblem problem = sphere_column_under_plate(layers, plate, 1.0, dt);
+  const SolveReport report = solve(problem, options_for({"coarse", Acceleration::none, 1.0}));
+  std::cout << "[ info ] " << layers << "-sphere column, coarse cell 1: "
+            << problem.coarse_groups() << " groups, " << report.sweeps << " sweeps\n";
+  EXPECT_GT(problem.coarse_groups(), ContactProblem::kMaxCoarseGroups / 8);
+  EXPECT_LE(problem.coarse_groups(), ContactProblem::kMaxCoarseGroups);
+  ASSERT_TRUE(report.converged);
+  for (int k = 0; k <= layers; ++k) {
+    const double above = (plate + (layers - k)) * kGravity * dt;
+    EXPECT_NEAR(problem.contacts[k].impulse.z(), above, 1e-6 * above) << "contact " << k;
+  }
+}
+
 TEST(Acceleration, SolveControlRestartsWhenTheResidualGrows)
 {
   SolverOptions options = options_for({"nesterov", Acceleration::nesterov, 0.0}, 1e-6);
