@@ -1,0 +1,58 @@
+"""Reads growth.sh's logs and prints, per method, the sweeps per step of the 20- and
+40-layer columns of every seed and their ratio (issue 14: 40 over 20 layers <= 1.5), as a
+markdown table.
+
+    /usr/bin/python3 growth.py WORK_DIR RAMP
+"""
+import glob
+import os
+import re
+import statistics
+import sys
+
+from report import read_log
+
+
+def sweeps_of(path):
+    """Sweeps of every solved step (the first thermo row is the setup's) and the median
+    floor error |F_floor + W| / W."""
+    rows, _, _, _ = read_log(path)
+    steps = rows[1:]
+    floor = statistics.median(abs(r[4] + r[5]) / r[5] for r in steps) if steps else float("nan")
+    return [r[1] for r in steps], floor
+
+
+def main(work, ramp):
+    runs = {}    # (method, seed) -> {layers: (sweeps, floor error)}
+    for path in glob.glob(os.path.join(work, f"column*_s*.*.ramp{ramp}.log")):
+        m = re.match(r"column(\d+)_s(\d+)\.(.+)\.ramp", os.path.basename(path))
+        sweeps, floor = sweeps_of(path)
+        if sweeps:
+            runs.setdefault((m.group(3).replace("_", " "), m.group(2)), {})[int(m.group(1))] = (sweeps, floor)
+    print(f"ramp {ramp}: sweeps per step (median / mean / max) and floor error, "
+          "20 and 40 layers; growth = mean 40 / mean 20\n")
+    print("| method | seed | 20 layers | 40 layers | growth of the mean | floor error 20 / 40 |")
+    print("|---|---|---|---|---|---|")
+    for method in sorted({k[0] for k in runs}):
+        totals = {20: [], 40: []}
+        for seed in sorted({k[1] for k in runs if k[0] == method}, key=int):
+            both = runs[(method, seed)]
+            if 20 not in both or 40 not in both:
+                continue
+            cells = []
+            for layers in (20, 40):
+                sweeps = both[layers][0]
+                totals[layers] += sweeps
+                cells.append(f"{statistics.median(sweeps):.0f} / {statistics.mean(sweeps):.1f} / {max(sweeps):.0f}")
+            growth = statistics.mean(both[40][0]) / max(statistics.mean(both[20][0]), 1e-9)
+            print(f"| `{method}` | {seed} | {cells[0]} | {cells[1]} | x{growth:.2f} | "
+                  f"{both[20][1]:.1e} / {both[40][1]:.1e} |")
+        if totals[20] and totals[40]:
+            growth = statistics.mean(totals[40]) / max(statistics.mean(totals[20]), 1e-9)
+            print(f"| `{method}` | all | {statistics.median(totals[20]):.0f} / {statistics.mean(totals[20]):.1f} / "
+                  f"{max(totals[20]):.0f} | {statistics.median(totals[40]):.0f} / {statistics.mean(totals[40]):.1f} / "
+                  f"{max(totals[40]):.0f} | **x{growth:.2f}** ({'met' if growth <= 1.5 else 'NOT met'}) | |")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "0")
