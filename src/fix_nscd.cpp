@@ -43,9 +43,10 @@ enum Diagnostic {
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
 
-// Restart files hold ImpulseRecords as raw bytes: their layout is the file format (version 1:
-// the record count, then the records).
-constexpr int kRestartVersion = 1;
+// Restart files hold ImpulseRecords as raw bytes: their layout is the file format. Version 1:
+// the record count, then the records; version 2: the count, the timestep the impulses were
+// solved with (0: unknown), then the records.
+constexpr int kRestartVersion = 2;
 
 // Cell size of the coarse correction (nscd::SolverOptions::coarse_cell) in grain sizes:
 // "no" = off, "yes" = 2 (the size measured best, doc/nscd_solver.md), or a number > 0.
@@ -813,8 +814,10 @@ void FixNSCD::write_restart(FILE *fp)
   const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
   if (comm->me == 0) {
     const int count = (int) all.size();
-    nscd_restart::write_header(fp, kRestartVersion, (int) (sizeof(int) + count * sizeof(nscd::ImpulseRecord)));
+    nscd_restart::write_header(fp, kRestartVersion,
+                               (int) (sizeof(int) + sizeof(double) + count * sizeof(nscd::ImpulseRecord)));
     fwrite(&count, sizeof(int), 1, fp);
+    fwrite(&warm_start_dt, sizeof(double), 1, fp);
     fwrite(all.data(), sizeof(nscd::ImpulseRecord), all.size(), fp);
   }
 }
@@ -831,6 +834,14 @@ void FixNSCD::restart(char *block)
                kRestartVersion, id);
   int count;
   std::memcpy(&count, buf, sizeof(int));
+  buf += sizeof(int);
+  // The impulses' timestep, so that a run at another `timestep` starts from the same forces
+  // (gather_contacts); before version 2 it is not known and the impulses are taken as they are.
+  warm_start_dt = 0.0;
+  if (version >= 2) {
+    std::memcpy(&warm_start_dt, buf, sizeof(double));
+    buf += sizeof(double);
+  }
   solver->restored_contacts.resize(count);
-  std::memcpy(solver->restored_contacts.data(), buf + sizeof(int), count * sizeof(nscd::ImpulseRecord));
+  std::memcpy(solver->restored_contacts.data(), buf, count * sizeof(nscd::ImpulseRecord));
 }
