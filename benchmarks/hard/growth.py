@@ -10,48 +10,55 @@ import re
 import statistics
 import sys
 
-from report import read_log
+from report import read_log, setting
 
 
 def sweeps_of(path):
-    """Sweeps of every solved step (the first thermo row is the setup's) and the median
-    floor error |F_floor + W| / W."""
-    rows, _, _, _ = read_log(path)
+    """Sweeps of every solved step (the first thermo row is the setup's), the median
+    floor error |F_floor + W| / W, and the number of steps that ended above the tolerance."""
+    rows, _, command, _ = read_log(path)
     steps = rows[1:]
     floor = statistics.median(abs(r[4] + r[5]) / r[5] for r in steps) if steps else float("nan")
-    return [r[1] for r in steps], floor
+    tolerance = setting(command, "tolerance", 1e-4)
+    return [r[1] for r in steps], floor, sum(1 for r in steps if r[2] > tolerance)
+
+
+def cell(sweeps, unconverged):
+    text = f"{statistics.median(sweeps):.0f} / {statistics.mean(sweeps):.1f} / {max(sweeps):.0f}"
+    return text + (f" ({unconverged} unconverged)" if unconverged else "")
 
 
 def main(work, ramp):
     runs = {}    # (method, seed) -> {layers: (sweeps, floor error)}
     for path in glob.glob(os.path.join(work, f"column*_s*.*.ramp{ramp}.log")):
         m = re.match(r"column(\d+)_s(\d+)\.(.+)\.ramp", os.path.basename(path))
-        sweeps, floor = sweeps_of(path)
+        sweeps, floor, unconverged = sweeps_of(path)
         if sweeps:
-            runs.setdefault((m.group(3).replace("_", " "), m.group(2)), {})[int(m.group(1))] = (sweeps, floor)
+            runs.setdefault((m.group(3).replace("_", " "), m.group(2)), {})[int(m.group(1))] = \
+                (sweeps, floor, unconverged)
     print(f"ramp {ramp}: sweeps per step (median / mean / max) and floor error, "
           "20 and 40 layers; growth = mean 40 / mean 20\n")
     print("| method | seed | 20 layers | 40 layers | growth of the mean | floor error 20 / 40 |")
     print("|---|---|---|---|---|---|")
     for method in sorted({k[0] for k in runs}):
-        totals = {20: [], 40: []}
+        totals, failed = {20: [], 40: []}, {20: 0, 40: 0}
         for seed in sorted({k[1] for k in runs if k[0] == method}, key=int):
             both = runs[(method, seed)]
             if 20 not in both or 40 not in both:
                 continue
             cells = []
             for layers in (20, 40):
-                sweeps = both[layers][0]
+                sweeps, _, unconverged = both[layers]
                 totals[layers] += sweeps
-                cells.append(f"{statistics.median(sweeps):.0f} / {statistics.mean(sweeps):.1f} / {max(sweeps):.0f}")
+                failed[layers] += unconverged
+                cells.append(cell(sweeps, unconverged))
             growth = statistics.mean(both[40][0]) / max(statistics.mean(both[20][0]), 1e-9)
             print(f"| `{method}` | {seed} | {cells[0]} | {cells[1]} | x{growth:.2f} | "
                   f"{both[20][1]:.1e} / {both[40][1]:.1e} |")
         if totals[20] and totals[40]:
             growth = statistics.mean(totals[40]) / max(statistics.mean(totals[20]), 1e-9)
-            print(f"| `{method}` | all | {statistics.median(totals[20]):.0f} / {statistics.mean(totals[20]):.1f} / "
-                  f"{max(totals[20]):.0f} | {statistics.median(totals[40]):.0f} / {statistics.mean(totals[40]):.1f} / "
-                  f"{max(totals[40]):.0f} | **x{growth:.2f}** ({'met' if growth <= 1.5 else 'NOT met'}) | |")
+            print(f"| `{method}` | all | {cell(totals[20], failed[20])} | {cell(totals[40], failed[40])} | "
+                  f"**x{growth:.2f}** ({'met' if growth <= 1.5 else 'NOT met'}) | |")
 
 
 if __name__ == "__main__":

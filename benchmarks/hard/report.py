@@ -37,13 +37,20 @@ def read_log(path):
                 in_thermo = False
             elif line.startswith("# command:"):
                 command = line[len("# command:"):].strip()
-            elif in_thermo:
+            elif in_thermo and not line.startswith("WARNING"):    # warnings interleave with thermo
                 fields = line.split()
                 try:
                     rows.append([float(x) for x in fields])
                 except ValueError:
                     in_thermo = False
     return rows, loop, command, grains
+
+
+def setting(command, key, default):
+    """The last value given to `key` in a run's command line (as -var key V or as a fix
+    nscd keyword inside the solver string), else default."""
+    values = re.findall(rf"(?:-var )?\b{key} ([\d.eE+-]+)", command)
+    return float(values[-1]) if values else default
 
 
 def summarise(path):
@@ -53,21 +60,30 @@ def summarise(path):
         return None
     sweeps = [r[1] for r in steps]
     floor_error = [abs(r[4] + r[5]) / r[5] for r in steps]
+    dt = setting(command, "dt", 0.005)
+    max_sweeps = setting(command, "max_sweeps", float("inf"))
     return {
         "grains": grains,
         "median": statistics.median(sweeps),
         "mean": statistics.mean(sweeps),
         "max": max(sweeps),
-        "unconverged": sum(1 for r in steps if r[2] > 0 and r[1] >= MAX_SWEEPS[path]),
+        "unconverged": sum(1 for r in steps if r[2] > 0 and r[1] >= max_sweeps),
         "ms": 1e3 * loop[0] / loop[1],
+        "per_time": loop[0] / (loop[1] * dt),    # wall seconds per simulated time unit
+        "dt": dt,
+        "residual": statistics.mean(r[2] for r in steps),
         "floor": statistics.median(floor_error),
         "overlap_start": steps[0][3],
         "overlap_end": steps[-1][3],
+        "overlap_max": max(r[3] for r in steps),
         "command": command,
     }
 
 
-MAX_SWEEPS = {}
+def label_of(log_tag):
+    """'method_nesterov_theta_0.5+dt0.0025' -> 'method nesterov theta 0.5, dt 0.0025'."""
+    solver, _, dt = log_tag.partition("+dt")
+    return solver.replace("_", " ") + (f", dt {dt}" if dt else "")
 
 
 def main(work, markdown, plot):
@@ -77,12 +93,10 @@ def main(work, markdown, plot):
         m = re.match(r"([a-z0-9]+)\.(.+)\.(1e-\d+)\.log$", name)
         if not m or m.group(1) not in SCENES:
             continue
-        text = open(path).read()
-        mm = re.search(r"-var max_sweeps (\d+)", text)
-        MAX_SWEEPS[path] = int(mm.group(1)) if mm else 10**9
         s = summarise(path)
         if s:
-            results[(m.group(1), m.group(2).replace("_", " "), m.group(3))] = s
+            results[(m.group(1), label_of(m.group(2)), m.group(3))] = s
+    labels = METHODS + sorted({k[1] for k in results} - set(METHODS))
 
     lines = ["<!-- hard:begin -->", "## Hard cases: solver methods (`benchmarks/hard`)", ""]
     cpu = subprocess.run(["sh", "-c", "grep -m1 'model name' /proc/cpuinfo | cut -d: -f2"],
@@ -91,27 +105,32 @@ def main(work, markdown, plot):
         f"Written by `benchmarks/hard/run.sh` (report.py) on {platform.node()}: {cpu}, "
         f"{os.cpu_count()} cores shared with other jobs (load average "
         f"{os.getloadavg()[0]:.1f} at the end), so wall times are noisy (±30 % or worse); "
-        "sweeps, floor errors and overlaps are exact for the deck. Every run: dt = 0.005, "
+        "sweeps, floor errors and overlaps are exact for the deck. Every run: dt = 0.005 (unless the method column names another), "
         "g = 9.81, the steps after the restart (or from rest), thermo every step.",
         "",
         "Columns: sweeps per step median / mean / max; ms/step = `Loop time` / steps (wall); "
-        "floor error = median over steps of |F_floor + W| / W (W = weight of grains and plate: "
-        "the closed-form reaction of a scene at rest); overlap = max predicted overlap "
-        "(f_nscd[3]) at the first / last step.",
+        "s per time unit = wall seconds per simulated time unit (runs at another dt cover the "
+        "same simulated time); residual = mean over the steps of the residual reached "
+        "(f_nscd[2]); floor error = median over steps of |F_floor + W| / W (W = weight of "
+        "grains and plate: the closed-form reaction of a scene at rest); overlap = max "
+        "predicted overlap (f_nscd[3]) at the first / last step, and its largest over the run. "
+        "The rows after the three methods change one setting of the default method "
+        "(`theta`, `max_sweeps`, dt, tolerance).",
         "",
-        "| scene | grains | method | tolerance | sweeps median / mean / max | unconverged steps | ms/step | floor error | overlap first / last |",
-        "|---|---|---|---|---|---|---|---|---|",
+        "| scene | grains | method | tolerance | sweeps median / mean / max | unconverged steps | ms/step | s per time unit | residual | floor error | overlap first / last / max |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for scene in SCENES:
-        for tol in sorted({k[2] for k in results}, key=float, reverse=True):
-            for method in METHODS:
-                s = results.get((scene, method, tol))
+        for label in labels:
+            for tol in sorted({k[2] for k in results}, key=float, reverse=True):
+                s = results.get((scene, label, tol))
                 if not s:
                     continue
                 lines.append(
-                    f"| {scene} | {s['grains']} | `{method}` | {tol} | {s['median']:.0f} / "
+                    f"| {scene} | {s['grains']} | `{label}` | {tol} | {s['median']:.0f} / "
                     f"{s['mean']:.1f} / {s['max']:.0f} | {s['unconverged']} | {s['ms']:.2f} | "
-                    f"{s['floor']:.2e} | {s['overlap_start']:.4f} / {s['overlap_end']:.4f} |")
+                    f"{s['per_time']:.2f} | {s['residual']:.1e} | {s['floor']:.2e} | "
+                    f"{s['overlap_start']:.4f} / {s['overlap_end']:.4f} / {s['overlap_max']:.4f} |")
     lines += ["", "Targets of issue 14 at tolerance 1e-4 (mean sweeps per step):", ""]
     for method in METHODS:
         pile = results.get(("pile", method, "1e-4"))
@@ -149,22 +168,31 @@ def main(work, markdown, plot):
         text = "# Benchmarks\n\n" + block
     open(markdown, "w").write(text)
 
-    fig, axes = plt.subplots(1, 2, figsize=(9, 3.6), dpi=80)
-    markers = {"method gs": "o", "method nesterov": "s", "method nesterov coarse yes": "^"}
+    # Pareto plots: cost against error, one point per run (colour: scene, marker: method or
+    # the setting changed)
+    fig, axes = plt.subplots(1, 3, figsize=(15, 3.8), dpi=80)
+    marker_list = ["o", "s", "^", "v", "D", "P", "X", "*"]
+    markers = {label: marker_list[k % len(marker_list)] for k, label in enumerate(labels)}
     colours = dict(zip(SCENES, ["C0", "C1", "C2", "C3", "C4"]))
-    for (scene, method, tol), s in results.items():
-        for ax, x in zip(axes, (s["mean"], s["ms"])):
-            ax.scatter(x, max(s["floor"], 1e-12), marker=markers[method], color=colours[scene], s=25)
-    for ax, label in zip(axes, ("sweeps per step (mean)", "wall ms per step")):
+    panels = (("per_time", "overlap_max", "wall s per simulated time unit", "max predicted overlap"),
+              ("ms", "residual", "wall ms per step", "residual reached (mean)"),
+              ("mean", "floor", "sweeps per step (mean)", "floor error |F+W|/W (median)"))
+    for (scene, label, tol), s in results.items():
+        for ax, (x, y, _, _) in zip(axes, panels):
+            ax.scatter(s[x], max(s[y], 1e-12), marker=markers[label], s=25,
+                       edgecolors=colours[scene],
+                       facecolors="none" if tol == "1e-3" else colours[scene])
+    for ax, (_, _, xlabel, ylabel) in zip(axes, panels):
         ax.set_xscale("log")
         ax.set_yscale("log")
-        ax.set_xlabel(label)
-        ax.set_ylabel("floor error |F+W|/W (median)")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
         ax.grid(True, which="both", alpha=0.3)
     handles = [plt.Line2D([], [], color=c, marker="o", ls="") for c in colours.values()]
     handles += [plt.Line2D([], [], color="k", marker=m, ls="") for m in markers.values()]
-    axes[1].legend(handles, list(colours) + [m.replace("method ", "") for m in markers],
-                   fontsize=7, loc="best")
+    axes[2].legend(handles, list(colours) + [m.replace("method ", "") for m in markers],
+                   fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0))    # beside, not on the points
+    axes[0].set_title("open markers: tolerance 1e-3", fontsize=8)
     fig.tight_layout()
     os.makedirs(os.path.dirname(plot), exist_ok=True)
     fig.savefig(plot)

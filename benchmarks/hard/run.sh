@@ -1,10 +1,13 @@
 #!/bin/bash
-# Hard-case benchmark of fix nscd's solver methods: every scene (in.tower20, in.pyramid10,
-# in.column with 20 and 40 layers under a plate of mass ratio 1000, in.pile with mu = 1) with
-# plain Gauss-Seidel and the accelerated methods at several tolerances; report.py turns the
-# logs into the table of doc/BENCHMARKS.md and doc/img/hard_speed_error.png.
+# Hard-case benchmark of fix nscd's solver, speed against error: every scene (in.tower20,
+# in.pyramid10, in.column with 20 and 40 layers under a plate of mass ratio 1000, in.pile with
+# mu = 1) with plain Gauss-Seidel and the accelerated methods at several tolerances, then the
+# default method with one setting changed at a time (theta, max_sweeps, dt, a tighter
+# tolerance); report.py turns the logs into the table of doc/BENCHMARKS.md and the Pareto
+# plots doc/img/hard_speed_error.png.
 #
-#   benchmarks/hard/run.sh            (LMP=path/to/lmp, WORK=scratch dir, STEPS=30, TOLERANCES="1e-3 1e-4", MAX_SWEEPS=5000)
+#   benchmarks/hard/run.sh            (LMP=path/to/lmp, WORK=scratch dir, STEPS=30, TOLERANCES="1e-3 1e-4",
+#                                      MAX_SWEEPS=5000, VARIANTS=yes)
 #
 # The settled column and pile are built once per WORK directory (in.*_settle).
 set -e
@@ -26,22 +29,39 @@ settle in.column_settle column20.restart -var layers 20
 settle in.column_settle column40.restart -var layers 40
 settle in.pile_settle pile.restart
 
-run() {    # name deck tolerance method [vars...]
+run() {    # name deck tolerance solver [vars...]: solver = fix nscd keywords
   local name=$1 deck=$2 tolerance=$3 method=$4
   shift 4
-  local log="$WORK/$name.${method// /_}.$tolerance.log"
-  local command="$LMP -in $deck -var steps $STEPS -var tolerance $tolerance -var max_sweeps $MAX_SWEEPS -var solver \"$method\" $*"
-  echo "$name | $method | $tolerance"
+  local tag="${method// /_}" steps=$STEPS
+  local args=("$@") k
+  for ((k = 0; k + 2 < ${#args[@]}; k++)); do    # -var dt X: the same simulated time at dt X
+    if [ "${args[k]} ${args[k+1]}" = "-var dt" ]; then
+      tag="$tag+dt${args[k+2]}"
+      steps=$(/usr/bin/python3 -c "print(round($STEPS * 0.005 / ${args[k+2]}))")
+    fi
+  done
+  local log="$WORK/$name.$tag.$tolerance.log"
+  local command="$LMP -in $deck -var steps $steps -var tolerance $tolerance -var max_sweeps $MAX_SWEEPS -var solver \"$method\" $*"
+  echo "$name | $method $* | $tolerance"
   ( cd "$PWD" && eval "$command -var dir $WORK -log $log" > /dev/null )
   echo "# command: (cd benchmarks/hard && ${command/$LMP/../../build/lmp} -var dir WORK)" >> "$log"
 }
+scenes() {    # tolerance solver [vars...]: every scene
+  run tower20 in.tower20 "$@"
+  run pyramid10 in.pyramid10 "$@"
+  run column20 in.column "$1" "$2" -var layers 20 "${@:3}"
+  run column40 in.column "$1" "$2" -var layers 40 "${@:3}"
+  run pile in.pile "$@"
+}
 for tolerance in ${TOLERANCES:-1e-3 1e-4}; do
   for method in "method gs" "method nesterov" "method nesterov coarse yes"; do
-    run tower20 in.tower20 $tolerance "$method"
-    run pyramid10 in.pyramid10 $tolerance "$method"
-    run column20 in.column $tolerance "$method" -var layers 20
-    run column40 in.column $tolerance "$method" -var layers 40
-    run pile in.pile $tolerance "$method"
+    scenes $tolerance "$method"
   done
 done
+if [ "${VARIANTS:-yes}" = yes ]; then    # the default method, one setting changed at a time
+  scenes 1e-4 "method nesterov theta 0.5"
+  scenes 1e-4 "method nesterov max_sweeps 100"
+  scenes 1e-4 "method nesterov" -var dt 0.0025
+  scenes 1e-5 "method nesterov"
+fi
 /usr/bin/python3 report.py "$WORK" ../../doc/BENCHMARKS.md ../../doc/img/hard_speed_error.png
