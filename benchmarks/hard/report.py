@@ -17,32 +17,29 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from nscd_analysis import logs  # noqa: E402
+
 SCENES = ["tower20", "pyramid10", "column20", "column40", "pile"]
 METHODS = ["method gs", "method nesterov", "method nesterov coarse yes"]
 
 
 def read_log(path):
-    """Per-step thermo rows (step, sweeps, residual, overlap, floor fz, weight, contacts),
-    the loop time, the step count and the command line of one run."""
-    rows, loop, command, grains = [], None, "", 0
-    in_thermo = False
+    """Per-step thermo rows (step, sweeps, residual, overlap, floor fz, weight, contacts) of
+    the measured run (the log's last), the loop time and step count, the command line, the
+    grain count."""
+    loop, command, grains = None, "", 0
     with open(path) as f:
         for line in f:
-            if line.strip().startswith("Step"):
-                in_thermo = True
-                continue
             if line.startswith("Loop time of"):
                 m = re.match(r"Loop time of ([\d.eE+-]+) on \d+ procs for (\d+) steps with (\d+)", line)
                 loop, grains = (float(m.group(1)), int(m.group(2))), int(m.group(3))
-                in_thermo = False
             elif line.startswith("# command:"):
                 command = line[len("# command:"):].strip()
-            elif in_thermo and not line.startswith("WARNING"):    # warnings interleave with thermo
-                fields = line.split()
-                try:
-                    rows.append([float(x) for x in fields])
-                except ValueError:
-                    in_thermo = False
+    try:
+        rows = logs.read_thermo(path)[-1][1].tolist()
+    except logs.LogError:
+        rows = []
     return rows, loop, command, grains
 
 
