@@ -233,25 +233,33 @@ void FixNSCD::check_no_bonds_on_grains()
 
 /* Overlap present at the start is not pushed apart by the solver (contacts only stop
    further approach): grains that overlap by more than a fifth of the smaller one's bounding
-   radius were placed wrongly. */
+   radius, or by more than their two rounding radii (their polyhedral cores intersect, and
+   the contact normals found between intersecting cores are not reliable: such a pair can
+   lock, or be pushed through itself by overlap_speed), were placed wrongly. */
 void FixNSCD::warn_if_grains_overlap()
 {
-  double worst[3] = {0.0, 0.0, 0.0};    // overlap / smaller radius, the two atom IDs
+  double worst[4] = {0.0, 0.0, 0.0, 0.0};    // overlap / smaller radius, the two IDs, overlap
   for (const nscd::Contact &c : pair->contacts()) {
     const double smaller = std::min(avec->radius[c.body_i], avec->radius[c.body_j]);
+    const double rounding = avec->shape_of(c.body_i).radius + avec->shape_of(c.body_j).radius;
     const double depth = -c.gap / smaller;
-    if (depth > worst[0]) worst[0] = depth, worst[1] = (double) c.key.tag_i, worst[2] = (double) c.key.tag_j;
+    const bool wrong = depth > 0.2 || -c.gap > rounding;
+    if (wrong && depth > worst[0])
+      worst[0] = depth, worst[1] = (double) c.key.tag_i, worst[2] = (double) c.key.tag_j, worst[3] = -c.gap;
   }
-  std::vector<double> all(3 * comm->nprocs);
-  MPI_Allgather(worst, 3, MPI_DOUBLE, all.data(), 3, MPI_DOUBLE, world);
+  std::vector<double> all(4 * comm->nprocs);
+  MPI_Allgather(worst, 4, MPI_DOUBLE, all.data(), 4, MPI_DOUBLE, world);
   for (int r = 0; r < comm->nprocs; r++)
-    if (all[3 * r] > worst[0]) std::copy(&all[3 * r], &all[3 * r + 3], worst);
-  if (worst[0] > 0.2 && comm->me == 0)
-    error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} of the smaller one's "
-                   "bounding radius at the start of the run; contacts keep overlap from growing "
-                   "but do not push it apart. Place the grains apart (e.g. on a coarser lattice) "
-                   "or let fix nscd push them apart slowly ('overlap_speed V')",
-                   (tagint) worst[1], (tagint) worst[2], worst[0]);
+    if (all[4 * r] > worst[0]) std::copy(&all[4 * r], &all[4 * r + 4], worst);
+  if (worst[0] > 0.0 && comm->me == 0)
+    error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} ({:.3g} of the smaller "
+                   "one's bounding radius) at the start of the run: deeper than a fifth of it or "
+                   "than their rounding, where contact normals are not reliable. Contacts keep "
+                   "overlap from growing but do not push it apart. Place the grains apart (e.g. "
+                   "on a coarser lattice, or delete one of each such pair: compute "
+                   "nscd/overlap/atom), or for shallow overlaps let fix nscd push them apart "
+                   "slowly ('overlap_speed V')",
+                   (tagint) worst[1], (tagint) worst[2], worst[3], worst[0]);
 }
 
 /* Every atom of the group must be a grain: points (wire nodes) belong to the wire fix.

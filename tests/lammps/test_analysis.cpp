@@ -126,6 +126,12 @@ class AnalysisTest : public LammpsTest {
     return out;
   }
 
+  double reduced_scalar(const std::string &compute_id)
+  {
+    Compute *c = lmp->modify->get_compute_by_id(compute_id);
+    return c->compute_scalar();
+  }
+
   double reduced(const std::string &compute_id, int index)
   {
     Compute *c = lmp->modify->get_compute_by_id(compute_id);
@@ -320,6 +326,52 @@ TEST_F(AnalysisTest, HeapFabricAndPairRowsAgreeWithThePointRows)
   }
 }
 
+// compute nscd/overlap/atom on unit cubes placed inside each other: A (ID 1) and B (ID 2)
+// overlap by 0.2 face to face across the ranks' cut at z = 9, D (ID 4) overlaps A by 0.1
+// side by side, C (ID 3) touches nothing. Each grain gets its deepest overlap and its
+// partner; a group leaves others at zero; the deck pattern of examples/column (delete the
+// later grain of each overlapping pair: B and D) leaves A and C, and no overlap.
+TEST_F(AnalysisTest, OverlapAtomNamesTheDeepestPartnerAndDeletesThePair)
+{
+  scene(0.5);
+  add_atom(0.0, 0.0, 8.5);
+  add_atom(0.1, 0.0, 9.3);
+  add_atom(5.0, 5.0, 8.5);
+  add_atom(-0.9, 0.0, 8.5);
+  commands({"shapes assign all shape 1 density 1", "group top id 2", "fix solver all nscd",
+            "compute ov all nscd/overlap/atom", "compute ovtop top nscd/overlap/atom",
+            "compute deepest all reduce max c_ov[1]", "run 0 post no"});
+  const auto row = [this](const std::string &id, tagint tag) {
+    Compute *c = lmp->modify->get_compute_by_id(id);
+    if (c->invoked_peratom != lmp->update->ntimestep) c->compute_peratom();
+    std::array<double, 2> mine{}, all{};
+    const int i = lmp->atom->map(tag);
+    if (i >= 0 && i < lmp->atom->nlocal) mine = {c->array_atom[i][0], c->array_atom[i][1]};
+    MPI_Allreduce(mine.data(), all.data(), 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  };
+  const std::map<tagint, std::array<double, 2>> expected = {
+      {1, {0.2, 2}}, {2, {0.2, 1}}, {3, {0.0, 0}}, {4, {0.1, 1}}};
+  for (const auto &[tag, depth_partner] : expected) {
+    const std::array<double, 2> got = row("ov", tag);
+    EXPECT_NEAR(got[0], depth_partner[0], 1e-12) << "grain " << tag;
+    EXPECT_EQ(got[1], depth_partner[1]) << "grain " << tag;
+  }
+  EXPECT_EQ(row("ovtop", 1)[0], 0.0);    // not in the group
+  EXPECT_NEAR(row("ovtop", 2)[0], 0.2, 1e-12);
+  commands({"variable inside atom \"c_ov[1] > 0 && id > c_ov[2]\"", "group inside variable inside",
+            "delete_atoms group inside compress no", "run 0 post no"});
+  EXPECT_EQ(lmp->atom->natoms, 2);
+  for (tagint tag : {1, 2, 3, 4}) {
+    const int i = lmp->atom->map(tag);
+    // (the array map can keep a deleted atom's old index: check the tag there)
+    double mine = i >= 0 && i < lmp->atom->nlocal && lmp->atom->tag[i] == tag ? 1.0 : 0.0, owners = 0;
+    MPI_Allreduce(&mine, &owners, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(owners, tag == 1 || tag == 3 ? 1.0 : 0.0) << "grain " << tag;
+  }
+  EXPECT_EQ(reduced_scalar("deepest"), 0.0);
+}
+
 TEST_F(AnalysisTest, BadKeywordsAreNamed)
 {
   scene(0.5);
@@ -327,6 +379,8 @@ TEST_F(AnalysisTest, BadKeywordsAreNamed)
   EXPECT_NE(error_of("compute f all fabric/atom boundaries").find("needs a value"), std::string::npos);
   EXPECT_NE(error_of("compute f all fabric/atom wire yes").find("not available yet"), std::string::npos);
   EXPECT_NE(error_of("compute c all nscd/contacts pair").find("unknown keyword 'pair'"), std::string::npos);
+  EXPECT_NE(error_of("compute o all nscd/overlap/atom deep").find("takes no keywords, got 'deep'"),
+            std::string::npos);
   run("compute f all fabric/atom");
   run("compute c all nscd/contacts pairs active");
   EXPECT_NE(error_of("run 0").find("needs fix nscd"), std::string::npos);

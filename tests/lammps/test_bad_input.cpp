@@ -56,6 +56,7 @@ class BadInputTest : public LammpsTest {
     run("log " + log);
     commands(lines);
     run("log none");
+    MPI_Barrier(MPI_COMM_WORLD);    // rank 0 writes the log: the others read it when it is closed
     std::ifstream in(log);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   }
@@ -167,4 +168,17 @@ TEST_F(BadInputTest, GrainsPlacedInsideEachOtherGetAWarning)
   const std::string log = log_of({"run 0"});
   EXPECT_TRUE(has(log, "overlap by")) << log;
   EXPECT_TRUE(has(log, "grains ID 1 and 3")) << log;
+}
+
+// Sharp cubes (rounding 0) overlapping by 0.1, less than a fifth of their bounding radius
+// (0.17) but deeper than their rounding: their cores intersect, the contact normals are not
+// reliable, so this warns too.
+TEST_F(BadInputTest, GrainsWhoseCoresIntersectGetAWarning)
+{
+  resting_cubes();
+  run("create_atoms 1 single 0 0 1.4");    // on top of atom 1, 0.1 into it
+  run("shapes assign all shape 1 density 1");
+  const std::string log = log_of({"run 0"});
+  EXPECT_TRUE(has(log, "grains ID 1 and 3 overlap by 0.1 (0.115 of the smaller one's bounding radius)"))
+      << log;
 }

@@ -72,6 +72,7 @@ class CreateWireTest : public LammpsTest {
   {
     const std::string log = scratch("log");
     commands({"log " + log, line, "log none"});
+    MPI_Barrier(MPI_COMM_WORLD);    // rank 0 writes the log: the others read it when it is closed
     std::ifstream in(log);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   }

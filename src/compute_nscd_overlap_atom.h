@@ -1,0 +1,42 @@
+/* compute nscd/overlap/atom: per grain, its deepest overlap with another grain and that
+   grain's atom ID, from pair nscd's last contact detection. Finds grains placed inside each
+   other (e.g. by create_atoms on a lattice), so that a deck can delete them.
+   See doc/compute_nscd_overlap_atom.md. */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(nscd/overlap/atom,ComputeNSCDOverlapAtom);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_NSCD_OVERLAP_ATOM_H
+#define LMP_COMPUTE_NSCD_OVERLAP_ATOM_H
+
+#include "compute.h"
+
+#include <cstdint>
+
+namespace LAMMPS_NS {
+
+class ComputeNSCDOverlapAtom : public Compute {
+ public:
+  ComputeNSCDOverlapAtom(class LAMMPS *, int, char **);
+  ~ComputeNSCDOverlapAtom() override;
+  void init() override;
+  void compute_peratom() override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+ private:
+  class PairNSCD *pair = nullptr;
+  int nmax = 0;
+
+  int index_of(std::int64_t tag) const;
+  void keep_deeper(int i, double depth, double partner);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
