@@ -597,7 +597,12 @@ Vec3 build_manifold(const Core &a, const Core &b, const ManifoldInput &in, Conta
   // lies over), so a pair farther apart than the limit has none.
   double nearest = std::numeric_limits<double>::infinity();
   for (const Candidate &c : ws.candidates) nearest = std::min(nearest, c.gap);
-  if (in.speculative_distance > 0.0 && ws.candidates.size() < 3 && nearest <= speculative_limit(in)) {
+  // Cores inside each other (grains placed deeper into each other than their rounding): the
+  // face a vertex lies highest above says nothing about where they separate, and points with
+  // such normals lock the pair or push it through itself. Only the closest features then.
+  const bool cores_intersect = nearest < -(a.radius + b.radius);
+  if (in.speculative_distance > 0.0 && ws.candidates.size() < 3 && nearest <= speculative_limit(in) &&
+      !cores_intersect) {
     const std::size_t closest = ws.candidates.size();
     add_edges_over_faces(a, b, true, closest, nearest, in, ws);
     add_edges_over_faces(b, a, false, closest, nearest, in, ws);

@@ -212,6 +212,22 @@ TEST_F(RandomPairs, PenetrationDepthIsBelowEverySampledDirection)
   }
 }
 
+// Cores inside each other (deeper than the two roundings): the whole pair has one normal,
+// its penetration axis, even with speculative points on; a point carrying the normal of a
+// face it lies over would lock the pair or push it through itself.
+TEST_F(RandomPairs, IntersectingCoresGiveOneNormal)
+{
+  ContactWorkspace ws;
+  int checked = 0;
+  for (const auto &p : pairs) {
+    const auto set = contact_grains(p.a, p.pa, p.b, p.pb, kActivation, ws, kActivation);
+    if (set.count == 0 || test::min_gap(set) >= -(p.a.radius + p.b.radius)) continue;
+    ++checked;
+    for (const auto &c : set) EXPECT_NEAR((c.normal - set[0].normal).norm(), 0.0, 1e-9);
+  }
+  EXPECT_GE(checked, 10);
+}
+
 // contact(j, i) describes the same points with opposite normals and swapped keys.
 TEST_F(RandomPairs, SwappingIAndJMirrorsTheContact)
 {
