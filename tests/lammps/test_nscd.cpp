@@ -113,6 +113,19 @@ class NSCDTest : public LammpsTest {
             "fix g all gravity 1.0 vector 0 0 -1"};
   }
 
+  // The small pile poured for 1500 steps at dt 0.005 (solved to 1e-5), saved as
+  // scratch("pile.restart"); returns the box commands, which a restart does not keep.
+  std::vector<std::string> pour_small_pile_to_restart()
+  {
+    const std::vector<std::string> walls = small_pile_box();
+    commands(small_pile_grains());
+    run("timestep 0.005");
+    commands(walls);
+    commands({"fix solver all nscd tolerance 1e-5 max_sweeps 2000", "run 1500",
+              "write_restart " + scratch("pile.restart")});
+    return walls;
+  }
+
   // Position, velocity, angular velocity of the atom with this ID (gathered to all ranks).
   std::vector<double> state_of(tagint tag)
   {
@@ -565,12 +578,7 @@ TEST_F(NSCDTest, RestartCarriesTheWarmStart)
 // needs several times more.
 TEST_F(NSCDTest, RestartAtAnotherTimestepStartsFromTheSameForces)
 {
-  const std::vector<std::string> walls = small_pile_box();
-  commands(small_pile_grains());
-  run("timestep 0.005");
-  commands(walls);
-  commands({"fix solver all nscd tolerance 1e-5 max_sweeps 2000", "run 1500",
-            "write_restart " + scratch("pile.restart")});
+  const std::vector<std::string> walls = pour_small_pile_to_restart();
   const auto first_step_sweeps = [&](const std::string &timestep) {
     restart_instance();
     commands({"read_restart " + scratch("pile.restart"), "timestep " + timestep});
@@ -924,12 +932,7 @@ TEST_F(NSCDTest, AcceleratedMethodsCarryTheStackLikeGaussSeidel)
 // tests/unit/solver/test_acceleration.cpp) are compared for every method.
 TEST_F(NSCDTest, AcceleratedMethodsGiveGaussSeidelsPileForces)
 {
-  const std::vector<std::string> walls = small_pile_box();
-  commands(small_pile_grains());
-  run("timestep 0.005");
-  commands(walls);
-  commands({"fix solver all nscd tolerance 1e-5 max_sweeps 2000", "run 1500",
-            "write_restart " + scratch("pile.restart")});
+  const std::vector<std::string> walls = pour_small_pile_to_restart();
   double mass_mine = 0.0, mass = 0.0;
   for (int i = 0; i < lmp->atom->nlocal; i++) mass_mine += lmp->atom->rmass[i];
   MPI_Allreduce(&mass_mine, &mass, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
