@@ -233,9 +233,9 @@ void FixNSCD::check_no_bonds_on_grains()
 
 /* Overlap present at the start is not pushed apart by the solver (contacts only stop
    further approach): grains that overlap by more than a fifth of the smaller one's bounding
-   radius, or by more than their two rounding radii (their polyhedral cores intersect, and
-   the contact normals found between intersecting cores are not reliable: such a pair can
-   lock, or be pushed through itself by overlap_speed), were placed wrongly. */
+   radius, or by more than their two rounding radii (their polyhedral cores intersect: the
+   contact then has one normal, the penetration axis, which need not be the way the grains
+   came together), were placed wrongly. */
 void FixNSCD::warn_if_grains_overlap()
 {
   double worst[4] = {0.0, 0.0, 0.0, 0.0};    // overlap / smaller radius, the two IDs, overlap
@@ -254,7 +254,8 @@ void FixNSCD::warn_if_grains_overlap()
   if (worst[0] > 0.0 && comm->me == 0)
     error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} ({:.3g} of the smaller "
                    "one's bounding radius) at the start of the run: deeper than a fifth of it or "
-                   "than their rounding, where contact normals are not reliable. Contacts keep "
+                   "than their rounding (their cores intersect: the contact normal is then the "
+                   "penetration axis, not necessarily the way they came). Contacts keep "
                    "overlap from growing but do not push it apart. Place the grains apart (e.g. "
                    "on a coarser lattice, or delete one of each such pair: compute "
                    "nscd/overlap/atom), or for shallow overlaps let fix nscd push them apart "
