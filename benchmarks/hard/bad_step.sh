@@ -31,8 +31,8 @@ solve() {    # label tolerance solver [vars...]
   "$LMP" -in in.column $column -var from "$before" -var steps 1 -var tolerance $tolerance \
     -var max_sweeps $MAX_SWEEPS -var solver "$solver" "$@" -log "$WORK/bad_step.log" > /dev/null
   awk -v label="$label" -v tol=$tolerance '/^Loop time/{on=0} /^ +Step/{on=1; next} on && !/^WARNING/ {row=$0}
-    END {split(row, f); printf "| %s | %s | %d | %.2e | %.1f | %.4f |\n", label, tol, f[2], f[3], f[8], f[9];
-         weight = f[10]} END {print weight > "/dev/stderr"}' "$WORK/bad_step.log" 2> "$WORK/bad_step.weight"
+    END {split(row, f); printf "| %s | %s | %d | %.2e | %.1f | %.4f |\n", label, tol, f[2], f[3], f[8], f[9]}' \
+    "$WORK/bad_step.log"
 }
 solve "\`method nesterov\` (default)" 1e-4 "method nesterov"
 solve "\`method gs\`" 1e-4 "method gs"
@@ -41,4 +41,4 @@ solve "\`method nesterov coarse yes\`" 1e-4 "method nesterov coarse yes"
 solve "\`method nesterov theta 0.5\`" 1e-4 "method nesterov theta 0.5"
 solve "\`method nesterov\`, reference" 1e-7 "method nesterov"
 echo
-echo "plate weight $(cat "$WORK/bad_step.weight"); grains and plate $(awk '/^ +Step/{getline; print $6; exit}' "$WORK/bad_step.log")"
+awk '/^ +Step/{getline; print "plate weight " $10 "; grains and plate " $6; exit}' "$WORK/bad_step.log"
