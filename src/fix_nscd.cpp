@@ -15,11 +15,13 @@
 #include "nscd_arrays.h"
 #include "nscd_gather.h"
 #include "nscd_restart.h"
+#include "nscd_timing.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
 #include "nscd_boundary_fix.h"
 #include "pair_nscd.h"
+#include "timer.h"
 #include "update.h"
 
 #include "solver/contact_problem.h"
@@ -71,6 +73,16 @@ struct FixNSCD::Solver {
   nscd::WarmStartCache warm_start;
   nscd::WarmStartCache handed_over;    // other ranks' unused impulses, after a list rebuild
   std::vector<nscd::ImpulseRecord> restored_contacts;    // warm start read from a restart file
+
+  // This run's time per part (contact detection is pair nscd's, from LAMMPS' timer) and
+  // its solver statistics, reported after the run.
+  enum Part { DETECTION, BOUNDARIES, SETUP, SWEEPS, SWEEP_COMM, UPDATE };
+  NSCDPartTimes times{{"contact detection (pair)", "boundary contacts", "solver setup", "sweeps",
+                       "sweep communication", "motion and hand-back"}};
+  struct RunStats {
+    bigint steps = 0, unconverged = 0, max_sweeps_step = -1, deepest_step = -1;
+    double sweeps = 0.0, max_sweeps = 0.0, deepest = 0.0;
+  } run;
 };
 
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
@@ -318,6 +330,8 @@ void FixNSCD::setup(int vflag)
   check_no_bonds_on_grains();
   warn_if_grains_overlap();
   run_started = true;
+  solver->times.clear();
+  solver->run = Solver::RunStats();
   post_force(vflag);
   measure_kinetic_energy();
 }
@@ -340,14 +354,25 @@ void FixNSCD::post_force(int vflag)
    phase), impulses solved, then velocities and positions of the group's grains updated. */
 void FixNSCD::final_integrate()
 {
+  NSCDPartTimes &times = solver->times;
+  double t0 = platform::walltime();
+  auto lap = [&](int part) {
+    const double now = platform::walltime();
+    times[part] += now - t0;
+    t0 = now;
+  };
   dt = update->dt;
   if (neighbor->ago == 0) check_no_points_in_group();
   exchange_mode = Exchange::state;
   comm->forward_comm(this, 12);
   build_bodies();
+  lap(Solver::SETUP);
   gather_contacts();
   count_shares();
+  prepare_problem();
+  lap(Solver::SETUP);
   solve();
+  lap(Solver::SWEEPS);
   move_grains();
   exchange_mode = Exchange::motion;    // ghosts' new velocities: next step's activations
   comm->forward_comm(this, 6);
@@ -356,6 +381,37 @@ void FixNSCD::final_integrate()
   warn_if_unconverged();
   measure_kinetic_energy();
   warn_if_contacts_can_be_missed();
+  count_run_statistics();
+  lap(Solver::UPDATE);
+}
+
+/* The run's sweeps, unconverged steps and deepest interpenetration (global values). */
+void FixNSCD::count_run_statistics()
+{
+  Solver::RunStats &run = solver->run;
+  const nscd::SolveReport &report = solver->report;
+  run.steps++;
+  run.sweeps += report.sweeps;
+  if (report.sweeps > run.max_sweeps) run.max_sweeps = report.sweeps, run.max_sweeps_step = update->ntimestep;
+  if (!report.converged) run.unconverged++;
+  if (report.terms.max_interpenetration > run.deepest)
+    run.deepest = report.terms.max_interpenetration, run.deepest_step = update->ntimestep;
+}
+
+/* After a run: the solver's statistics and the time per part and rank. */
+void FixNSCD::post_run()
+{
+  const Solver::RunStats &run = solver->run;
+  if (run.steps == 0) return;
+  solver->times[Solver::DETECTION] = timer->get_wall(Timer::PAIR);
+  const std::string table = solver->times.table(world, fmt::format("fix nscd {}: time per part", id),
+                                                timer->get_wall(Timer::TOTAL));
+  if (comm->me != 0) return;
+  utils::logmesg(lmp, "fix nscd {}: {} steps, sweeps per step {:.4g} on average, at most {:.0f} (step {}); "
+                 "{} unconverged ({:.3g} %, tolerance {:.3g}); deepest interpenetration {:.4g} (step {})\n{}",
+                 id, run.steps, run.sweeps / run.steps, run.max_sweeps, run.max_sweeps_step, run.unconverged,
+                 100.0 * run.unconverged / run.steps, solver->options.tolerance, run.deepest, run.deepest_step,
+                 table);
 }
 
 void FixNSCD::build_bodies()
@@ -402,11 +458,15 @@ void FixNSCD::gather_contacts()
   solver->problem.contacts = pair->contacts();
   pair_count = solver->problem.contacts.size();
   boundary_counts.assign(boundaries.size(), 0);
+  const double t0 = platform::walltime();
   for (size_t k = 0; k < boundaries.size(); k++) {
     const size_t before = solver->problem.contacts.size();
     boundaries[k]->append_contacts(solver->problem.contacts, pair->activation_distance(), dt);
     boundary_counts[k] = (int) (solver->problem.contacts.size() - before);
   }
+  const double boundary_time = platform::walltime() - t0;
+  solver->times[Solver::BOUNDARIES] += boundary_time;
+  solver->times[Solver::SETUP] -= boundary_time;    // final_integrate counts all of this as setup
   warm_start_contacts();
   // Impulses scale with the step: after a `timestep` change, start from the same forces.
   if (warm_start_dt > 0.0 && warm_start_dt != dt)
@@ -493,10 +553,8 @@ void FixNSCD::count_shares()
   for (nscd::SolverBody &body : solver->problem.bodies) body.share = std::max(1.0, body.share);
 }
 
-/* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of
-   ghost grains go to their owners and the owners' velocities back to all copies, so every
-   rank iterates on the same global velocities. The convergence test is global. */
-void FixNSCD::solve()
+/* The Delassus blocks and free velocities of the step's contacts. */
+void FixNSCD::prepare_problem()
 {
   solver->options.dt = dt;
   try {
@@ -506,18 +564,35 @@ void FixNSCD::solve()
     error->one(FLERR, "fix nscd: bad contact problem ({}); grains of the first contact: IDs {} "
                "and {}", e.what(), first.key.tag_i, first.key.tag_j);
   }
+}
+
+/* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of
+   ghost grains go to their owners and the owners' velocities back to all copies, so every
+   rank iterates on the same global velocities. The convergence test is global. */
+void FixNSCD::solve()
+{
   // lib/solver's loop, its communication done with LAMMPS' comm (ghost velocities) and
   // MPI_Allreduce, so every decision (stop, restart, coarse correction) is global.
-  nscd::SolverCommunication communication;
-  communication.exchange = [this](nscd::ContactProblem &) { exchange_velocities(); };
-  communication.sum = [this](double *values, int n) {
-    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world);
+  // The communication's time (waiting for the other ranks included) is counted apart from
+  // the sweeps' (final_integrate counts the whole solve as sweeps).
+  double comm_time = 0.0;
+  auto timed = [&comm_time](auto &&work) {
+    const double t0 = platform::walltime();
+    work();
+    comm_time += platform::walltime() - t0;
   };
-  communication.max = [this](double *values, int n) {
-    MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_MAX, world);
+  nscd::SolverCommunication communication;
+  communication.exchange = [&](nscd::ContactProblem &) { timed([&] { exchange_velocities(); }); };
+  communication.sum = [&](double *values, int n) {
+    timed([&] { MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world); });
+  };
+  communication.max = [&](double *values, int n) {
+    timed([&] { MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_MAX, world); });
   };
   communication.exchange_every = exchange_every;
   solver->report = nscd::iterate(solver->problem, solver->options, communication);
+  solver->times[Solver::SWEEP_COMM] += comm_time;
+  solver->times[Solver::SWEEPS] -= comm_time;
   if (!std::isfinite(solver->report.residual)) stop_on_non_finite_problem();
 }
 

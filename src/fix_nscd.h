@@ -34,6 +34,7 @@ class FixNSCD : public Fix {
   void setup(int) override;
   void post_force(int) override;
   void final_integrate() override;
+  void post_run() override;
   double compute_vector(int) override;
 
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -94,7 +95,9 @@ class FixNSCD : public Fix {
   void warm_start_contacts();
   bool contacts_may_have_changed_rank();
   void take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers);
+  void prepare_problem();
   void solve();
+  void count_run_statistics();
   void exchange_velocities();
   void move_grains();
   void hand_back_forces();

@@ -14,6 +14,7 @@
 #include "error.h"
 #include "memory.h"
 #include "nscd_gather.h"
+#include "nscd_timing.h"
 #include "timer.h"
 #include "update.h"
 
@@ -220,8 +221,8 @@ void FixWire::restart(char *buf)
 
 /* ---------------------------------------------------------------------- timing report */
 
-/* fix wire's share of the run, printed after it: time per node per substep, its split over
-   contacts, elastic forces, integration and communication, and the bytes sent per substep. */
+/* fix wire's share of the run, printed after it: its time per part and rank (min, avg, max),
+   the time per node per substep, and the bytes sent per substep. */
 void FixWire::post_run()
 {
   if (substeps_run == 0) return;
@@ -231,24 +232,26 @@ void FixWire::post_run()
   timing[T_INTEGRATION] = t.integration;
   timing[T_COMM] = t.exchange + timing[T_COMM_STEP];
   timing[T_NODE_SUBSTEPS] = t.node_substeps;
+  NSCDPartTimes parts({"wire contacts", "elastic forces", "integration", "communication",
+                       "step setup and hand-over"});
+  parts[0] = timing[T_CONTACTS];
+  parts[1] = timing[T_ELASTIC];
+  parts[2] = timing[T_INTEGRATION];
+  parts[3] = timing[T_COMM];
+  parts[4] = std::max(0.0, timing[T_TOTAL] - parts[0] - parts[1] - parts[2] - parts[3]);
+  const double loop = timer->get_wall(Timer::TOTAL);
+  std::string text = parts.table(world, fmt::format("fix wire {}: time per part", id), loop);
   std::array<double, N_TIMING> sum;
   MPI_Allreduce(timing.data(), sum.data(), N_TIMING, MPI_DOUBLE, MPI_SUM, world);
-  double slowest;
-  MPI_Allreduce(&timing[T_TOTAL], &slowest, 1, MPI_DOUBLE, MPI_MAX, world);
   if (comm->me != 0) return;
-  const double loop = timer->get_wall(Timer::TOTAL), total = sum[T_TOTAL], steps = (double) substeps_run;
+  const double steps = (double) substeps_run;
   const double per = sum[T_NODE_SUBSTEPS] > 0.0 ? 1e9 / sum[T_NODE_SUBSTEPS] : 0.0;
-  auto share = [&](double x) { return total > 0.0 ? 100.0 * x / total : 0.0; };
-  std::string text = fmt::format(
-      "fix wire {0}: {1:.4g} s of {2:.4g} s loop time ({3:.3g} %, slowest rank), {4} substeps, {5:.0f} nodes\n"
-      "fix wire {0}: {6:.4g} ns per node per substep (time summed over ranks; cpu {7:.4g} ns)\n"
-      "fix wire {0}: contacts {8:.3g} %, elastic forces {9:.3g} %, integration {10:.3g} %, communication "
-      "{11:.3g} %, step setup and hand-over {12:.3g} %\n"
-      "fix wire {0}: communication per substep (all ranks): {13:.0f} bytes of wire nodes; {14:.0f} bytes "
+  text += fmt::format(
+      "fix wire {0}: {1} substeps, {2:.0f} nodes, {3:.4g} ns per node per substep (time summed over ranks; "
+      "cpu {4:.4g} ns)\n"
+      "fix wire {0}: communication per substep (all ranks): {5:.0f} bytes of wire nodes; {6:.0f} bytes "
       "for 6 + 3 doubles per ghost atom of any kind\n",
-      id, slowest, loop, loop > 0.0 ? 100.0 * slowest / loop : 0.0, substeps_run, sum[T_NODE_SUBSTEPS] / steps,
-      total * per, sum[T_CPU] * per, share(sum[T_CONTACTS]), share(sum[T_ELASTIC]), share(sum[T_INTEGRATION]),
-      share(sum[T_COMM]), share(total - sum[T_CONTACTS] - sum[T_ELASTIC] - sum[T_INTEGRATION] - sum[T_COMM]),
+      id, substeps_run, sum[T_NODE_SUBSTEPS] / steps, sum[T_TOTAL] * per, sum[T_CPU] * per,
       8.0 * sum[T_SENT] / steps, 8.0 * sum[T_SENT_ALL_ATOMS] / steps);
   if (lib->contacts) {
     const wire::ContactModel &c = *lib->contacts;

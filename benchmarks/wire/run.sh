@@ -33,6 +33,8 @@ run() {    # label, log name, fix wire's skin option, launcher words...
     -log "$log" -screen none
   echo "== $label"
   awk '/benchmark phase:/ {phase = $3}
+       /^fix wire w: time per part/ {rows = 9}
+       rows > 0 {print phase ": " $0; rows--; next}
        /^fix wire w:/ {print phase ": " $0}
        /^Loop time/ {loop = $4} /^Modify/ {print phase ": Modify " $5 " s (average over ranks) of loop " loop " s"}' "$log"
   awk '/^ +Step/ {getline; first = $0} /^Loop time/ {print "   thermo at the end of the phase: " last} /^ +[0-9]+ / {last = $0}' "$log"

@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """Per-phase summary of a log of examples/column/in.column (or examples/silo/in.silo):
 steps, wall time (sum of the runs' "Loop time"), wall time per step, mean solver sweeps per
-step, fraction of unconverged steps, then the deck's "phase N done" lines. A run still going
-(no "Loop time" yet) is left out, with a note.
+step, fraction of unconverged steps, then where the time went (the time-per-part tables fix
+nscd and fix wire print after each run, summed over the phase's runs: each part's average
+over the ranks in % of the wall time, and the busy share of the slowest rank, i.e. the wall
+time less the least time any rank spent in communication, waiting included), then the
+deck's "phase N done" lines. A run still going (no "Loop time" yet) is left out, with a note.
 
-    /usr/bin/python3 summary.py log.column [--csv out.csv]
+    /usr/bin/python3 summary.py log.column [--csv out.csv] [--parts parts.csv]
 
 Needs the thermo columns the deck prints (v_phase, f_solver[1], f_solver[2])."""
 
@@ -17,12 +20,39 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from nscd_analysis import logs  # noqa: E402
 
 LOOP = re.compile(r"^Loop time of (\S+) on (\d+) procs for (\d+) steps")
+TABLE = re.compile(r"^fix (nscd|wire) \S+: time per part")
+ROW = re.compile(r"^(.+?)\s*\|\s*(\S+)\s*\|\s*(\S+)\s*\|\s*(\S+)\s*\|")
 NAMES = {1: "deposit", 2: "relax", 3: "walls", 4: "relax", 5: "load"}
+COMMUNICATION = ("nscd: sweep communication", "wire: communication")
 
 
 def loop_times(path):
     with open(path) as f:
         return [(float(m.group(1)), int(m.group(3))) for m in map(LOOP.match, f) if m]
+
+
+def part_times(path):
+    """Per finished run (in the order of the 'Loop time' lines): {"nscd: sweeps": (min, avg,
+    max), ...} from the time-per-part tables printed before the run's 'Loop time' line."""
+    runs, pending, style = [], {}, None
+    with open(path) as f:
+        for line in f:
+            table = TABLE.match(line)
+            if table:
+                style = table.group(1)
+                continue
+            if style:
+                row = ROW.match(line)
+                if line.startswith(("part ", "---")):
+                    pass    # the table's header and rule
+                elif row and row.group(1) != "total":
+                    pending[f"{style}: {row.group(1)}"] = tuple(float(row.group(k)) for k in (2, 3, 4))
+                elif row is None:
+                    style = None
+            if LOOP.match(line):
+                runs.append(pending)
+                pending, style = {}, None
+    return runs
 
 
 def summarise(path):
@@ -36,14 +66,19 @@ def summarise(path):
     if len(blocks) != len(loops):
         raise SystemExit(f"{path}: {len(blocks)} thermo blocks but {len(loops)} 'Loop time' lines "
                          "(a run without thermo output)")
+    parts = part_times(path)
     phases = {}
-    for (columns, data), (seconds, steps) in zip(blocks, loops):
+    for (columns, data), (seconds, steps), times in zip(blocks, loops, parts):
         if "v_phase" not in columns or not len(data):
             continue
         phase = int(data[-1, columns.index("v_phase")])
-        p = phases.setdefault(phase, {"steps": 0, "seconds": 0.0, "sweeps": [], "unconverged": []})
+        p = phases.setdefault(phase, {"steps": 0, "seconds": 0.0, "sweeps": [], "unconverged": [],
+                                      "parts": {}, "least_communication": 0.0})
         p["steps"] += steps
         p["seconds"] += seconds
+        for name, (low, average, _) in times.items():
+            p["parts"][name] = p["parts"].get(name, 0.0) + average
+        p["least_communication"] += sum(times[name][0] for name in COMMUNICATION if name in times)
         if steps and "f_solver[1]" in columns:
             rows = data[1:]    # the first row repeats the state before the run
             p["sweeps"] += list(rows[:, columns.index("f_solver[1]")])
@@ -59,6 +94,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("log")
     parser.add_argument("--csv")
+    parser.add_argument("--parts", help="write the time-per-part table of the phases here (CSV)")
     args = parser.parse_args()
     phases = summarise(args.log)
     header = "phase,name,steps,wall_s,ms_per_step,mean_sweeps,unconverged_fraction"
@@ -75,6 +111,10 @@ def main():
     rows.append(f"all,,{total_steps},{total_s:.1f},{1000 * total_s / max(total_steps, 1):.1f},,")
     print(header)
     print("\n".join(rows))
+    part_rows = part_table(phases)
+    if part_rows:
+        print()
+        print("\n".join(part_rows))
     with open(args.log) as f:
         for line in f:
             if re.match(r"^phase \d", line):
@@ -82,6 +122,26 @@ def main():
     if args.csv:
         with open(args.csv, "w") as f:
             f.write(header + "\n" + "\n".join(rows) + "\n")
+    if args.parts and part_rows:
+        with open(args.parts, "w") as f:
+            f.write("\n".join(part_rows) + "\n")
+
+
+def part_table(phases):
+    """Where the time of each phase went: each part's average over the ranks in % of the
+    phase's wall time, and the slowest rank's busy share (CSV rows, header first)."""
+    names = sorted({name for p in phases.values() for name in p["parts"]})
+    if not names:
+        return []
+    rows = ["phase,name,wall_s," + ",".join(f"{n} %" for n in names) + ",slowest rank busy %"]
+    for phase in sorted(phases):
+        p = phases[phase]
+        if not p["steps"] or not p["seconds"]:
+            continue
+        shares = ",".join(f"{100 * p['parts'].get(n, 0.0) / p['seconds']:.1f}" for n in names)
+        busy = 100 * (1 - p["least_communication"] / p["seconds"])
+        rows.append(f"{phase},{NAMES.get(phase, '?')},{p['seconds']:.1f},{shares},{busy:.1f}")
+    return rows
 
 
 if __name__ == "__main__":
