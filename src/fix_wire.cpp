@@ -40,6 +40,10 @@ using nscd::Vec3;
 namespace wire = nscd::wire;
 
 namespace {
+// A step of more wire substeps than this never ends in practice; more than the ratio times
+// what stability needs is warned about.
+constexpr int kMaxSubsteps = 1000000, kWarnSubstepsRatio = 10;
+
 enum Diagnostic {
   E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
   GRAIN_FZ, DT_SP_STABLE, N_WIRE_BOUNDARY, STEPS_TOO_FAST
@@ -80,6 +84,10 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
     if (!(wire_radius > 0.0))
       error->all(FLERR, "fix wire: contacts (k_n {}) need a wire radius > 0: elements of radius 0 "
                  "never touch; give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
+    if (contacts_per_node < 1.0)
+      error->all(FLERR, "fix wire: contacts_per_node {} with contacts (k_n {}): the automatic substep would "
+                 "leave out the contacts' stiffness and damping, and a wire touching anything could gain "
+                 "energy; give contacts_per_node >= 1 (default 2)", contacts_per_node, law.k_n);
   }
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -127,6 +135,8 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   *option->second = x;
   mu_s_given = mu_s_given || key == "mu_s";
   mu_d_given = mu_d_given || key == "mu_d";
+  if (key == "dt_sp" && !(x > 0.0))
+    error->all(FLERR, "fix wire: dt_sp {} must be > 0; for the automatic substep give 'substeps auto' (the default)", x);
   if (key == "dt_sp") requested_substeps = 0;
 }
 
@@ -245,16 +255,44 @@ void FixWire::plan_substeps()
     error->all(FLERR, "fix wire: a wire node has mass {}; give every node a mass with 'shapes "
                "assign GROUP shape 0 mass M'", w.node_mass);
   const auto kind = wire::GearCorrector::ThreeSixteenths;
+  int needed = 1;
   try {
     stable_dt_sp = wire::max_stable_wire_step(w, kind, safety);
+    needed = wire::plan_subcycle(update->dt, stable_dt_sp).substeps;
+  } catch (std::exception &e) {
+    error->all(FLERR, "fix wire: {}", e.what());
+  }
+  refuse_absurd_substeps(needed);
+  try {
     lib->plan = requested_dt_sp > 0.0 ? wire::plan_subcycle(update->dt, requested_dt_sp)
                                       : wire::plan_subcycle(update->dt, stable_dt_sp, requested_substeps);
     wire::check_wire_step(lib->plan.dt_sp, w, kind, safety);
   } catch (std::exception &e) {
-    error->all(FLERR, "fix wire: dt_SP above the wire stability limit dt_SP max = {:.6g}: {}. Ways "
-               "out: fix wire option 'substeps auto' (default), a larger 'substeps N', a smaller "
-               "'dt_sp', or a smaller timestep", stable_dt_sp, e.what());
+    error->all(FLERR, "fix wire: {} (wire stability limit dt_SP max = {:.6g}). Ways out: fix wire option "
+               "'substeps auto' (default), a larger 'substeps N', a smaller 'dt_sp', or a smaller timestep",
+               e.what(), stable_dt_sp);
   }
+  if (lib->plan.substeps > kWarnSubstepsRatio * needed && comm->me == 0)
+    error->warning(FLERR, "fix wire: {} asks for {} wire substeps per step, {:.0f} times the {} the stability "
+                   "limit needs: each step costs that much more wire time for no gain in stability; use "
+                   "'substeps auto'", requested_substeps_text(), lib->plan.substeps,
+                   (double) lib->plan.substeps / needed, needed);
+}
+
+/* More substeps than stability needs only cost time; far more is a mistake (a dt_sp meant
+   for another timestep or unit system), and beyond kMaxSubsteps a step never ends. */
+void FixWire::refuse_absurd_substeps(int needed)
+{
+  const double asked = requested_dt_sp > 0.0 ? update->dt / requested_dt_sp : (double) requested_substeps;
+  if (asked > kMaxSubsteps && asked > needed)
+    error->all(FLERR, "fix wire: {} asks for {:.6g} wire substeps per step, more than {}: a step would take "
+               "minutes; the stability limit needs {} (substeps auto)", requested_substeps_text(), asked,
+               kMaxSubsteps, needed);
+}
+
+std::string FixWire::requested_substeps_text() const
+{
+  return requested_dt_sp > 0.0 ? fmt::format("dt_sp {}", requested_dt_sp) : fmt::format("substeps {}", requested_substeps);
 }
 
 /* The contact model lives across runs (it holds the friction memories); a new skin makes a

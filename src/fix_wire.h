@@ -20,6 +20,7 @@ FixStyle(wire,FixWire);
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -80,7 +81,7 @@ class FixWire : public Fix {
   bool contacts_recorded = false;                  // for compute wire/contacts
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
   int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
-  double requested_dt_sp = 0.0, safety = 0.5, contacts_per_node = 2.0;
+  double requested_dt_sp = 0.0, safety = 0.9, contacts_per_node = 2.0;
 
   class BondWire *bond = nullptr;
   class AngleWire *angle = nullptr;
@@ -117,6 +118,8 @@ class FixWire : public Fix {
   void check_partners();
   void find_boundaries();
   void plan_substeps();
+  void refuse_absurd_substeps(int needed);
+  std::string requested_substeps_text() const;
   void make_contact_model();
   void gather_elements();
   void rescale_states(double new_dt);

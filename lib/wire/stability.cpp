@@ -1,5 +1,7 @@
 #include "wire/stability.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -27,6 +29,34 @@ double gear5_frequency_limit(GearCorrector kind)
 
 double gear5_damping_limit() { return 0.163; }
 
+double gear5_spectral_radius(double w_dt, double g_dt, GearCorrector kind)
+{
+  // One step maps the scaled derivatives r (dt = 1) to C P r: P is the Taylor shift
+  // (Pascal's triangle), C adds c_k D with D = a/2 - p_2 and a = -w_dt^2 p_0 - g_dt p_1.
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+  Matrix6 shift = Matrix6::Zero();
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0, binomial = 1; i <= j; binomial = binomial * (j - i) / (i + 1), ++i) shift(i, j) = binomial;
+  Eigen::Matrix<double, 1, 6> mismatch = Eigen::Matrix<double, 1, 6>::Zero();
+  mismatch(0) = -0.5 * w_dt * w_dt;
+  mismatch(1) = -0.5 * g_dt;
+  mismatch(2) = -1.0;
+  const std::array<double, 6> c = gear5_corrector_coefficients(kind);
+  const Eigen::Matrix<double, 6, 1> coefficients(c[0], c[1], c[2], c[3], c[4], c[5]);
+  const Matrix6 step = (Matrix6::Identity() + coefficients * mismatch) * shift;
+  return step.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+bool gear5_stable(double w_dt, double g_dt, GearCorrector kind)
+{
+  const double w_limit = gear5_frequency_limit(kind);
+  if (!(w_dt >= 0.0 && g_dt >= 0.0) || w_dt > w_limit || g_dt > gear5_damping_limit()) return false;
+  // The undamped mode at the frequency limit sets what "not growing" means (1 + 1.5e-9 for
+  // 3/16 at 0.313; 3/20 grows slowly at every step, 1 + 1.8e-7 at its limit 0.2).
+  const double allowed = std::max(1.0, gear5_spectral_radius(w_limit, 0.0, kind));
+  return gear5_spectral_radius(w_dt, g_dt, kind) <= allowed;
+}
+
 double wire_max_angular_frequency(const WireStiffness &w)
 {
   require(w.node_mass > 0.0, "node mass", w.node_mass, "must be > 0");
@@ -53,10 +83,19 @@ double max_stable_wire_step(const WireStiffness &wire, GearCorrector kind, doubl
   require(safety > 0.0 && safety <= 1.0, "safety factor", safety, "must be in (0, 1]");
   const double omega = wire_max_angular_frequency(wire);
   const double rate = wire_max_damping_rate(wire);
-  const double inverse = omega / gear5_frequency_limit(kind) + rate / gear5_damping_limit();
-  require(inverse > 0.0, "highest wire frequency", omega,
+  require(omega > 0.0 || rate > 0.0, "highest wire frequency", omega,
           "and damping rate are both 0: give k_elo, k_rot, k_n or a damping");
-  return safety / inverse;
+  // Each limit alone bounds the step; bisection finds where the rectangle leaves the region
+  // (along dt it leaves once: see stability.h).
+  double high = std::min(omega > 0.0 ? gear5_frequency_limit(kind) / omega : INFINITY,
+                         rate > 0.0 ? gear5_damping_limit() / rate : INFINITY);
+  double low = 0.0;
+  if (gear5_stable(omega * high, rate * high, kind)) low = high;
+  for (int i = 0; i < 60 && high - low > 1e-12 * high; ++i) {
+    const double mid = 0.5 * (low + high);
+    (gear5_stable(omega * mid, rate * mid, kind) ? low : high) = mid;
+  }
+  return safety * low;
 }
 
 void check_wire_step(double dt_sp, const WireStiffness &wire, GearCorrector kind, double safety)

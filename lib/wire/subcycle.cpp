@@ -16,6 +16,12 @@ SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_subst
     throw std::invalid_argument(msg.str());
   }
   // Small slack so that dt_nscd = 10 * dt_sp_max gives 10, not 11, substeps.
+  if (dt_nscd / dt_sp_max > 1e9) {
+    std::ostringstream msg;
+    msg << "wire subcycle: dt_NSCD = " << dt_nscd << " is " << dt_nscd / dt_sp_max
+        << " times the wire step " << dt_sp_max << "; more than 1e9 substeps per step cannot be run";
+    throw std::invalid_argument(msg.str());
+  }
   const int needed = std::max(1, static_cast<int>(std::ceil(dt_nscd / dt_sp_max * (1.0 - 1e-12))));
   if (requested_substeps < 0) {
     std::ostringstream msg;
@@ -26,7 +32,7 @@ SubcyclePlan plan_subcycle(double dt_nscd, double dt_sp_max, int requested_subst
   if (requested_substeps > 0 && requested_substeps < needed) {
     std::ostringstream msg;
     msg << "wire subcycle: " << requested_substeps << " substeps give dt_SP = "
-        << dt_nscd / requested_substeps << " above the stable " << dt_sp_max
+        << dt_nscd / requested_substeps << " above the stability limit " << dt_sp_max
         << "; use at least " << needed << " substeps (or 0 for automatic)";
     throw std::invalid_argument(msg.str());
   }

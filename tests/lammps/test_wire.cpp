@@ -525,6 +525,47 @@ TEST_F(WireTest, SubstepAboveTheStabilityLimitIsANamedError)
   EXPECT_GT(fix_value("w", 5), 1.0);
 }
 
+// A substep count far beyond what stability needs is a mistake (a dt_sp meant for another
+// timestep): warned above 10 times the need, refused above 10^6 per step (a step that never
+// ends); dt_sp 0 is not "automatic"; contacts with contacts_per_node 0 would leave the
+// contacts out of the automatic step.
+TEST_F(WireTest, AbsurdSubstepsAreRefusedAndExcessiveOnesWarned)
+{
+  scene(straight_chain(11, 0.1, 0.01), 11, true, 1e4, 0.1, 1.0);
+  run("group wire id 2:11");
+  run("fix w wire wire");
+  run("run 0");
+  const int needed = (int) fix_value("w", 5);
+  run("unfix w");
+  run("fix w wire wire substeps 1000000000");
+  const std::string absurd = error_of("run 1");
+  EXPECT_NE(absurd.find("substeps 1000000000 asks for 1e+09 wire substeps per step, more than 1000000"), std::string::npos) << absurd;
+  EXPECT_NE(absurd.find(fmt::format("needs {} (substeps auto)", needed)), std::string::npos) << absurd;
+  run("unfix w");
+  run("fix w wire wire dt_sp 1e-15");
+  EXPECT_NE(error_of("run 1").find("more than"), std::string::npos);
+  run("unfix w");
+  const std::string zero = error_of("fix w wire wire dt_sp 0");
+  EXPECT_NE(zero.find("dt_sp 0 must be > 0"), std::string::npos) << zero;
+  EXPECT_NE(zero.find("substeps auto"), std::string::npos) << zero;
+  const std::string uncounted = error_of("fix w wire wire radius 0.02 k_n 100 contacts_per_node 0");
+  EXPECT_NE(uncounted.find("contacts_per_node 0"), std::string::npos) << uncounted;
+  run("fix w wire wire radius 0.02 contacts_per_node 0");    // no contacts (k_n 0): nothing to count
+  run("unfix w");
+  // 20 times the need: runs, with a warning naming the ratio
+  run(fmt::format("fix w wire wire substeps {}", 20 * needed));
+  const std::string log = scratch("excessive.log");
+  run("log " + log);
+  run("run 1");
+  run("log none");
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::ifstream in(log);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(fmt::format("asks for {} wire substeps per step, 20 times the {}", 20 * needed, needed)),
+            std::string::npos) << text;
+  EXPECT_EQ(fix_value("w", 5), 20.0 * needed);
+}
+
 TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
 {
   scene(straight_chain(3, 0.1, 0.01), 3, true, 1e2, 0.1, 1.0);
@@ -1381,4 +1422,39 @@ TEST_F(WireOnBoundaryTest, NodeBehindAWallIsANamedError)
   wire_and_solver();
   const std::string message = error_of("run 0");
   EXPECT_NE(message.find("atom ID 1 is outside the wall"), std::string::npos) << message;
+}
+
+// The papers' wire (examples/column: k_elo 5000 on elements of 0.2, nodes of 0.005, k_n
+// 2000, gamma_n 2; no node damping) lying on a frictional floor with a ball of mass 0.5
+// resting on it, at the NSCD step 0.005 and the substep count fix wire chooses (83, against
+// 247 before the rule of 2026-11). Unstable substeps would blow the wire up within a few
+// hundred steps; stable ones bring everything to rest with the floor carrying it all.
+TEST_F(WireOnBoundaryTest, PapersWireUnderABallAtRestStaysStableAtTheChosenSubsteps)
+{
+  const int nodes = 11;
+  const double l = 0.2, m = 0.005, r_w = 0.05, ball = 0.5;
+  std::vector<Point> atoms = straight_chain(nodes, l, m, -1.0, r_w);
+  atoms.push_back({0.0, 0.0, 2.0 * r_w + 0.5, ball, 2, 2});
+  scene(atoms, nodes, true, 5000.0, l, 0.01);
+  commands({"pair_style nscd", "pair_coeff * * 0.5", "special_bonds lj 0 0 0", "timestep 0.005",
+            "group wire id 1:" + std::to_string(nodes), "group balls type 2",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+            "fix w wire wire radius " + num(r_w) + " k_n 2000 gamma_n 2 k_t 1500 gamma_t 1 mu_s 0.5",
+            "fix solver balls nscd tolerance 1e-9 max_sweeps 500"});
+  double highest = 0.0;    // kinetic energy over the second half
+  for (int k = 0; k < 8; k++) {
+    run("run 500");
+    if (k >= 4) highest = std::max(highest, kinetic_energy(1, MAXTAGINT));
+  }
+  const double weight = nodes * m + ball;
+  std::printf("[ papers' wire under a ball ] %g substeps; floor %.10g (weight %.10g), kinetic energy %.3g, "
+              "ball z %.6g\n", fix_value("w", 5), -fix_value("floor", 2), weight, kinetic_energy(1, MAXTAGINT),
+              position(nodes + 1)[2]);
+  EXPECT_EQ(fix_value("w", 5), 83.0);
+  EXPECT_NEAR(fix_value("floor", 2) / -weight, 1.0, 1e-6);
+  // A slow rocking of the ball on the undamped wire stays (~1e-8 at 83 and at 247 substeps);
+  // an unstable subcycle would grow by orders of magnitude.
+  EXPECT_LT(highest, 1e-6);
+  EXPECT_GT(position(nodes + 1)[2], r_w + 0.5);    // the ball lies on the wire, not on the floor
+  EXPECT_LT(position(nodes + 1)[2], 2.0 * r_w + 0.5);
 }

@@ -191,20 +191,78 @@ TEST(Gear5Stability, DampingLimitMatchesBisection)
   EXPECT_NEAR(limit, gear5_damping_limit(), 0.002);
 }
 
-TEST(Gear5Stability, CombinedRuleIsStableOnMixedCases)
+namespace {
+
+// Largest |x| + |v| over the last half of n steps of x'' = -w^2 x - g x' (w = 1) at step dt,
+// started at x = 1 at rest with r_3..r_5 = 0 (which seeds every parasitic mode).
+double late_peak(double dt, double g, int n)
 {
-  // dt = 1 / (w / w_limit + g / g_limit) with w = 1 for damping ratios from tiny to heavy.
-  for (double g : {0.01, 0.1, 0.3, 0.6, 1.0, 2.0, 5.0}) {
-    const double dt = 1.0 / (1.0 / gear5_frequency_limit(GearCorrector::ThreeSixteenths) +
-                             g / gear5_damping_limit());
-    Gear5State s = gear5_start(Vec3(1, 0, 0), Vec3::Zero(), Vec3(-1, 0, 0), dt);
-    const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
-    double peak_late = 0;
-    for (int i = 0; i < 20000; ++i) {
-      step(s, dt, g, c);
-      if (i > 10000) peak_late = std::max(peak_late, s.r[0].norm() + s.velocity(dt).norm());
-    }
-    EXPECT_LT(peak_late, 2.0) << "g=" << g << " dt=" << dt;    // decays, never grows
+  Gear5State s = gear5_start(Vec3(1, 0, 0), Vec3::Zero(), Vec3(-1, 0, 0), dt);
+  const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+  double peak = 0;
+  for (int i = 0; i < n; ++i) {
+    step(s, dt, g, c);
+    const double size = s.r[0].norm() + s.velocity(dt).norm();
+    if (!std::isfinite(size)) return std::numeric_limits<double>::infinity();    // overflowed
+    if (i > n / 2) peak = std::max(peak, size);
+  }
+  return peak;
+}
+
+}    // namespace
+
+TEST(Gear5Stability, SpectralRadiusGivesTheMeasuredLimits)
+{
+  const auto kind = GearCorrector::ThreeSixteenths;
+  // The eigenvalues of the step matrix put the edges where the runs above measured them.
+  EXPECT_LT(gear5_spectral_radius(0.30, 0.0, kind), 1.0);
+  EXPECT_GT(gear5_spectral_radius(0.32, 0.0, kind), 1.0);
+  EXPECT_LT(gear5_spectral_radius(0.0, 0.160, kind), 1.0);
+  EXPECT_GT(gear5_spectral_radius(0.0, 0.166, kind), 1.0);
+  // A little damping stabilises frequencies far above the undamped limit; heavy damping
+  // narrows the range (the table in doc/wire_model.md).
+  EXPECT_LT(gear5_spectral_radius(0.70, 0.02, kind), 1.0);
+  EXPECT_GT(gear5_spectral_radius(0.35, 0.15, kind), 1.0);
+  // And runs agree where the radius says stable or not, on both sides of the edge.
+  struct Point { double w_dt, g_dt; };
+  for (const Point p : {Point{0.7, 0.02}, Point{0.45, 0.11}, Point{0.30, 0.14}, Point{0.10, 0.16}}) {
+    const double radius = gear5_spectral_radius(p.w_dt, p.g_dt, kind);
+    const double peak = late_peak(p.w_dt, p.g_dt / p.w_dt, 40000);
+    std::printf("[gear5] w dt %.3f g dt %.3f: spectral radius %.9f, late peak %.3g\n", p.w_dt, p.g_dt, radius, peak);
+    EXPECT_EQ(radius < 1.0, peak < 2.0) << "w dt " << p.w_dt << " g dt " << p.g_dt;
+  }
+  for (const Point p : {Point{0.80, 0.02}, Point{0.50, 0.11}, Point{0.33, 0.14}, Point{0.16, 0.16}}) {
+    EXPECT_GT(gear5_spectral_radius(p.w_dt, p.g_dt, kind), 1.0);
+    EXPECT_GT(late_peak(p.w_dt, p.g_dt / p.w_dt, 40000), 2.0) << "w dt " << p.w_dt << " g dt " << p.g_dt;
+  }
+}
+
+TEST(Gear5Stability, RectangleRuleHoldsForEveryModeUnderTheCorner)
+{
+  // gear5_stable(w, g) must mean: every w' <= w, g' <= g is stable. Check on a grid under
+  // corners on the rule's edge (found by bisection), and that just beyond them is not.
+  const auto kind = GearCorrector::ThreeSixteenths;
+  for (double g_dt : {0.0, 0.02, 0.08, 0.12, 0.14, 0.15, 0.16}) {
+    double low = 0.0, high = 1.0;
+    for (int i = 0; i < 50; ++i) (gear5_stable(0.5 * (low + high), g_dt, kind) ? low : high) = 0.5 * (low + high);
+    std::printf("[gear5] g dt %.3f: the rule allows w dt up to %.4f\n", g_dt, low);
+    EXPECT_LE(low, gear5_frequency_limit(kind) + 1e-12);
+    EXPECT_FALSE(gear5_stable(low * 1.01 + 1e-6, g_dt, kind));
+    for (int a = 0; a <= 20; ++a)
+      for (int b = 0; b <= 20; ++b)
+        EXPECT_LE(gear5_spectral_radius(low * a / 20.0, g_dt * b / 20.0, kind), 1.0 + 2e-9)
+            << "w dt " << low * a / 20 << " g dt " << g_dt * b / 20;
+  }
+}
+
+TEST(Gear5Stability, OldAdditiveRuleIsInsideTheNewOne)
+{
+  // dt = 1 / (w / w_limit + g / g_limit), the rule before 2026-11, is stable everywhere the
+  // new rule says so, and the new rule never allows a smaller step.
+  for (double g : {0.0, 0.01, 0.1, 0.3, 0.6, 1.0, 2.0, 5.0}) {
+    const double old_dt = 1.0 / (1.0 / gear5_frequency_limit(GearCorrector::ThreeSixteenths) + g / gear5_damping_limit());
+    EXPECT_TRUE(gear5_stable(old_dt, g * old_dt, GearCorrector::ThreeSixteenths)) << "g=" << g;
+    EXPECT_LT(late_peak(old_dt, g, 20000), 2.0) << "g=" << g << " dt=" << old_dt;    // decays, never grows
   }
 }
 

@@ -24,8 +24,39 @@ TEST(WireStability, FrequencyBoundAddsAxialBendingAndContactStiffness)
   w.gamma_contact = 0.25;
   w.node_damping = 0.5;
   EXPECT_NEAR(wire_max_damping_rate(w), (2 * 2 * 0.25 + 0.5) / 0.5, 1e-12);
-  const double expected = 0.5 / (wire_max_angular_frequency(w) / 0.313 + 3.0 / 0.163);
-  EXPECT_NEAR(max_stable_wire_step(w), expected, 1e-15);
+  // The step is safety x the largest dt whose corner (w_max dt, g_max dt) is stable.
+  const double dt = max_stable_wire_step(w, GearCorrector::ThreeSixteenths, 0.5);
+  const double omega = wire_max_angular_frequency(w), rate = wire_max_damping_rate(w);
+  EXPECT_TRUE(gear5_stable(omega * 2.0 * dt, rate * 2.0 * dt, GearCorrector::ThreeSixteenths));
+  EXPECT_FALSE(gear5_stable(omega * 2.0 * dt * 1.0001, rate * 2.0 * dt * 1.0001, GearCorrector::ThreeSixteenths));
+  // never below the old additive rule at the same safety
+  EXPECT_GE(dt, 0.5 / (omega / 0.313 + rate / 0.163));
+}
+
+TEST(WireStability, PapersWireNeedsFewerSubstepsThanTheAdditiveRule)
+{
+  // examples/column's wire: k_elo 5000 on elements of 0.2, nodes of 0.005, k_rot 0.01, soft
+  // contacts k_n 2000 with gamma_n 2, 2 per node. w_max = 4648, g_max = 1600: the frequency
+  // limit binds (w dt = 0.313 at g dt = 0.108, inside the region).
+  WireStiffness w;
+  w.node_mass = 0.005;
+  w.element_length = 0.2;
+  w.k_elo = 5000.0;
+  w.k_rot = 0.01;
+  w.k_n = 2000.0;
+  w.gamma_contact = 2.0;
+  w.contacts_per_node = 2.0;
+  const double omega = wire_max_angular_frequency(w), rate = wire_max_damping_rate(w);
+  EXPECT_NEAR(omega, std::sqrt(4.0 * (25000.0 + 1.0 + 2000.0) / 0.005), 1e-9);
+  EXPECT_NEAR(rate, 1600.0, 1e-9);
+  const double dt = max_stable_wire_step(w, GearCorrector::ThreeSixteenths, 1.0);
+  EXPECT_NEAR(dt, 0.313 / omega, 1e-6 * dt);
+  const int substeps = plan_subcycle(0.005, max_stable_wire_step(w)).substeps;
+  const int before = plan_subcycle(0.005, 0.5 / (omega / 0.313 + rate / 0.163)).substeps;
+  std::printf("[stability] papers' wire at dt 0.005: %d substeps at the default safety 0.9 (the additive "
+              "rule at 0.5: %d)\n", substeps, before);
+  EXPECT_EQ(before, 247);
+  EXPECT_EQ(substeps, 83);
 }
 
 TEST(WireStability, TooLargeStepIsRejectedWithTheWayOut)
