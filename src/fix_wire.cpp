@@ -54,7 +54,7 @@ enum Diagnostic {
 
 /* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [radius R]
                      [damp C] [substeps N|auto] [dt_sp DT] [safety S] [contacts_per_node N]
-                     [skin S] */
+                     [skin S] [inertia S] */
 FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
 {
   time_integrate = restart_global = restart_peratom = create_attribute = 1;
@@ -89,6 +89,12 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
                  "leave out the contacts' stiffness and damping, and a wire touching anything could gain "
                  "energy; give contacts_per_node >= 1 (default 2)", contacts_per_node, law.k_n);
   }
+  // A wire of S times the inertia is the same wire in slow motion by sqrt(S) when its
+  // dashpots grow by sqrt(S): damping ratios (a contact's restitution) stay as given.
+  const double dashpot_scale = std::sqrt(inertia_scale);
+  law.gamma_n *= dashpot_scale;
+  law.gamma_t *= dashpot_scale;
+  node_damping *= dashpot_scale;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -107,13 +113,13 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   const std::string key = arg[iarg];
   const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
   const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius, damp, substeps, "
-                         "dt_sp, safety, contacts_per_node, skin";
+                         "dt_sp, safety, contacts_per_node, skin, inertia";
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
       {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
       {"mu_s", &law.mu_s}, {"mu_d", &law.mu_d}, {"radius", &wire_radius}, {"damp", &node_damping},
       {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
-      {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}};
+      {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}, {"inertia", &inertia_scale}};
   const bool known = plain.count(key) || key == "substeps";
   if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
@@ -132,6 +138,8 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
   if (key == "skin" && !(x > 0.0)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
+  if (key == "inertia" && !(x >= 1.0))
+    error->all(FLERR, "fix wire: inertia {} must be >= 1 (the factor on the nodes' inertia; 1: none)", x);
   *option->second = x;
   mu_s_given = mu_s_given || key == "mu_s";
   mu_d_given = mu_d_given || key == "mu_d";
@@ -164,6 +172,12 @@ void FixWire::init()
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");
   avec = AtomVecSpheropolyhedron::find(lmp, "fix wire");
+  if (inertia_scale > 1.0 && comm->me == 0)
+    error->warning(FLERR, "fix wire: inertia {}: the wire nodes move as if {} times heavier, with their weight "
+                   "and springs unchanged and their dashpots {:.3g} times stronger: the wire's own motion runs "
+                   "{:.3g} times slower (a free wire falls at g/{}) and takes {:.3g} times fewer substeps; for "
+                   "quasi-static phases only (doc/fix_wire.md)", inertia_scale, inertia_scale,
+                   std::sqrt(inertia_scale), std::sqrt(inertia_scale), inertia_scale, std::sqrt(inertia_scale));
   check_partners();
   find_boundaries();
   plan_substeps();
@@ -236,6 +250,7 @@ void FixWire::plan_substeps()
   for (int i = 0; i < atom->nlocal; i++)
     if ((atom->mask[i] & groupbit) && avec->shape[i] == 0) mass = std::min(mass, avec->rmass[i]);
   MPI_Allreduce(&mass, &w.node_mass, 1, MPI_DOUBLE, MPI_MIN, world);
+  w.node_mass *= inertia_scale;
   for (int t = 1; bond && t <= atom->nbondtypes; t++) {
     length = std::min(length, bond->rest_length(t));
     w.k_elo = std::max(w.k_elo, bond->law(t).k_elo);
@@ -477,7 +492,7 @@ void FixWire::load_nodes()
     else s = wire::gear5_start(vec3(atom->x[i]), vec3(atom->v[i]), Vec3::Zero(), dt);
     s.r[0] = lib->step_start[k] = vec3(atom->x[i]);
     s.r[1] = vec3(atom->v[i]) * dt;
-    nodes.mass[k] = avec->rmass[i];
+    nodes.mass[k] = inertia_scale * avec->rmass[i];    // the weight stays rmass g
     nodes.fixed[k] = (atom->mask[i] & groupbit) ? 0 : 1;
   }
   wire::prepare_wire_nodes(nodes, dt);

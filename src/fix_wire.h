@@ -82,6 +82,7 @@ class FixWire : public Fix {
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
   int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
   double requested_dt_sp = 0.0, safety = 0.9, contacts_per_node = 2.0;
+  double inertia_scale = 1.0;    // the nodes' inertia over their mass (option inertia)
 
   class BondWire *bond = nullptr;
   class AngleWire *angle = nullptr;

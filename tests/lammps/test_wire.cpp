@@ -1458,3 +1458,31 @@ TEST_F(WireOnBoundaryTest, PapersWireUnderABallAtRestStaysStableAtTheChosenSubst
   EXPECT_GT(position(nodes + 1)[2], r_w + 0.5);    // the ball lies on the wire, not on the floor
   EXPECT_LT(position(nodes + 1)[2], 2.0 * r_w + 0.5);
 }
+
+// Option inertia S: the nodes move as if S times heavier while their weight is unchanged.
+// A free wire falls at g / S (closed form z0 - g t^2 / (2 S)), the substep count falls by
+// sqrt(S), and a wire at rest on the floor still presses on it with its true weight (its
+// dashpots scaled by sqrt(S), it lands as the unscaled wire does instead of bouncing).
+TEST_F(WireOnBoundaryTest, InertiaScalesTheDynamicsNotTheWeight)
+{
+  wire_on_floor(true, 0.0, kRadius + 0.01);    // 0.01 above the floor: falls freely first
+  commands({"fix g wire gravity 1.0 vector 0 0 -1",
+            "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.9",
+            "fix solver balls nscd tolerance 1e-9 max_sweeps 500"});
+  run("run 0");
+  const double plain_substeps = fix_value("w", 5), plain_stable = fix_value("w", 10);
+  run("unfix w");
+  run("fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.9 inertia 16");
+  const double t = 0.5, S = 16.0;    // 500 steps of 0.001: falls 0.0078, touches nothing
+  run("run 500");
+  std::printf("[ inertia ] substeps %g (without: %g); node 5 fell %.10g (closed form %.10g)\n", fix_value("w", 5),
+              plain_substeps, kRadius + 0.01 - position(5)[2], t * t / (2.0 * S));
+  EXPECT_NEAR((kRadius + 0.01 - position(5)[2]) / (t * t / (2.0 * S)), 1.0, 0.01);    // (the Gear start lags ~dt)
+  EXPECT_EQ(fix_value("w", 5), std::ceil(plain_substeps / 4.0 - 1e-9));
+  EXPECT_NEAR(fix_value("w", 10) / plain_stable, 4.0, 1e-9);    // every rate of the wire / sqrt(S)
+  run("run 20000");    // down onto the floor (dashpots scaled: it does not bounce away), at rest there
+  const double weight = kNodes * kMass;
+  EXPECT_NEAR(fix_value("floor", 2) / -weight, 1.0, 1e-6);
+  EXPECT_NEAR(position(5)[2], kRadius - kMass / kN, 1e-3 * kMass / kN);
+  EXPECT_NE(error_of("fix w2 wire wire inertia 0.5").find("inertia 0.5 must be >= 1"), std::string::npos);
+}
