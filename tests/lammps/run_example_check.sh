@@ -23,7 +23,7 @@ case "$name" in
     ;;
   column)  # a 2-layer column through all five phases: double loops, no wire, closed rings (< 1 min)
     small=(-var layers 2 -var R 2 -var element 0.3 -var layer_steps 300 -var wire_steps 100
-           -var relax_chunk 200 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.6
+           -var relax_chunk 200 -var relax_max 5 -var wall_speed 0.3 -var wall_travel 0.6
            -var seat_steps 100 -var load_chunk 100 -var load_max 3 -var load_rate 20
            -var thermo_every 100 -var dump_every 100000)
     "${launch[@]}" "$lmp" -in "$deck" -log log.column "${small[@]}" > screen.txt
