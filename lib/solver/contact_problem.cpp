@@ -274,17 +274,30 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
     row.delassus_inverse = cholesky.solve(Mat3::Identity());
   }
 
-  // Active-contact rule (doc/nscd_solver.md): predicted gap with u_n^+ = 0, then the
-  // lowest admissible end-of-step normal velocity.
-  const double theta_dt = options_.theta * options_.dt;
-  const double u_n_start = u_start[0];
-  row.gap_start = contact.gap + (1.0 - options_.theta) * options_.dt * u_n_start;
-  if (row.gap_start > 0.0)
-    row.normal_shift = -row.gap_start / theta_dt;
-  else
-    row.normal_shift = std::max(contact.restitution * std::max(-u_n_start, 0.0),
-                                std::min(-row.gap_start / theta_dt, options_.overlap_speed));
+  row.gap_start = contact.gap + (1.0 - options_.theta) * options_.dt * u_start[0];
+  row.normal_shift = lowest_normal_velocity(contact, u_start[0], row.gap_start);
   row.offset[0] -= row.normal_shift;
+}
+
+// The Signorini rule (doc/nscd_solver.md, "Which contacts act"): u_min, the lowest
+// admissible end-of-step normal velocity, from the gap, the start-of-step normal velocity
+// u_n^- and g_theta = gap + (1 - theta) dt u_n^- (the end gap if u_n^+ = 0).
+double ContactProblem::lowest_normal_velocity(const Contact &contact, double u_n_start,
+                                              double gap_theta) const
+{
+  const double theta_dt = options_.theta * options_.dt;
+  const double newton = contact.restitution * std::max(-u_n_start, 0.0);
+  if (gap_theta <= 0.0)    // closed: Newton's law, existing overlap kept (or pushed out)
+    return std::max(newton, std::min(-gap_theta / theta_dt, options_.overlap_speed));
+  // Open, but its start velocity closes it within the step: the impact happens in this
+  // step, and Newton's law must see the approach speed u_n^-. Limiting the approach to
+  // the gap instead would cut it to gap / dt before the next step's Newton law sees it.
+  // With e = 0 the gap is closed exactly (Newton's u_n^+ = 0 then holds from the next
+  // step, with no penetration); with e > 0 the bodies leave at e |u_n^-| before the gap
+  // is gone.
+  const bool closes_within_step = contact.gap + options_.dt * u_n_start <= 0.0;
+  if (closes_within_step && contact.restitution > 0.0) return newton;
+  return -gap_theta / theta_dt;    // may approach as far as closing the gap
 }
 
 void ContactProblem::mark_synchronised()

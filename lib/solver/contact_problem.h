@@ -276,6 +276,8 @@ class ContactProblem {
   using Row = detail::ContactRow;
 
   void build_row(const Contact &contact, std::size_t index, Row &row) const;
+  double lowest_normal_velocity(const Contact &contact, double u_n_start,
+                                double gap_theta) const;
   void relax(Row &row);
   Vec3 local_velocity(const Row &row) const;
   void apply_impulse_change(const Row &row, const Vec3 &dP);

@@ -10,10 +10,44 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
+#include <array>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
+
+// A shape library of a unit cube (shape 1), a rounded cube (2) and a ball (3, one vertex),
+// all of isotropic inertia and size 1.
+inline constexpr const char *kIsotropicShapes = R"(shape cube
+radius 0
+vertices 8
+0 0 0
+1 0 0
+0 1 0
+1 1 0
+0 0 1
+1 0 1
+0 1 1
+1 1 1
+end
+shape rounded_cube
+radius 0.1
+vertices 8
+0 0 0
+0.8 0 0
+0 0.8 0
+0.8 0.8 0
+0 0 0.8
+0.8 0 0.8
+0 0.8 0.8
+0.8 0.8 0.8
+end
+shape ball
+radius 0.5
+vertices 1
+0 0 0
+end
+)";
 
 class LammpsTest : public ::testing::Test {
  protected:
@@ -79,6 +113,19 @@ class LammpsTest : public ::testing::Test {
     MPI_Comm_size(MPI_COMM_WORLD, &n);
     return n;
   }
+
+  // Row `tag` of a per-atom 3-vector (x, v, ...) of whichever rank owns the atom, on every rank.
+  std::array<double, 3> vector_of(LAMMPS_NS::tagint tag, double **per_atom)
+  {
+    double mine[3] = {0.0, 0.0, 0.0}, all[3];
+    const int i = lmp->atom->map(tag);
+    if (i >= 0 && i < lmp->atom->nlocal)
+      for (int k = 0; k < 3; k++) mine[k] = per_atom[i][k];
+    MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return {all[0], all[1], all[2]};
+  }
+  std::array<double, 3> velocity_of(LAMMPS_NS::tagint tag) { return vector_of(tag, lmp->atom->v); }
+  std::array<double, 3> position_of(LAMMPS_NS::tagint tag) { return vector_of(tag, lmp->atom->x); }
 
   // Path of a scratch file unique to this test (and shared by all ranks).
   std::string scratch(const std::string &name) const

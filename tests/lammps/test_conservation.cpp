@@ -24,38 +24,6 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-// Unit cube, rounded cube and ball: all of isotropic inertia.
-const char *kIsotropicShapes = R"(shape cube
-radius 0
-vertices 8
-0 0 0
-1 0 0
-0 1 0
-1 1 0
-0 0 1
-1 0 1
-0 1 1
-1 1 1
-end
-shape rounded_cube
-radius 0.1
-vertices 8
-0 0 0
-0.8 0 0
-0 0.8 0
-0.8 0.8 0
-0 0 0.8
-0.8 0 0.8
-0 0.8 0.8
-0.8 0.8 0.8
-end
-shape ball
-radius 0.5
-vertices 1
-0 0 0
-end
-)";
-
 enum SolverOutput { CONTACTS = 3, KE_TRANSLATION = 8, KE_ROTATION = 9 };
 
 // The body-frame vector v turned by the orientation q = (w, x, y, z).
@@ -126,17 +94,6 @@ class ConservationTest : public LammpsTest {
   }
 
   double solver_output(int index) { return lmp->modify->get_fix_by_id("solver")->compute_vector(index); }
-
-  // The velocity of atom `tag` (whichever rank owns it).
-  std::array<double, 3> velocity_of(tagint tag)
-  {
-    double mine[3] = {0.0, 0.0, 0.0}, all[3];
-    const int i = lmp->atom->map(tag);
-    if (i >= 0 && i < lmp->atom->nlocal)
-      for (int k = 0; k < 3; k++) mine[k] = lmp->atom->v[i][k];
-    MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-    return {all[0], all[1], all[2]};
-  }
 
   // Grains on a simple cubic lattice of the given spacing inside [-2.5, 2.5]^3 (27 at
   // spacing 2) in a box of half-width `half`, random velocities and spins, no gravity;

@@ -48,6 +48,8 @@ struct BoxColumn {
   std::vector<Box> boxes;
   double floor_friction = 0.0;
   double box_friction = 0.0;
+  double floor_restitution = 0.0;
+  double box_restitution = 0.0;
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);
   WarmStartCache cache;
   bool warm_start = true;
@@ -84,6 +86,7 @@ struct BoxColumn {
         contact.normal = Vec3::UnitZ();
         contact.gap = bottom - support;
         contact.friction = lower < 0 ? floor_friction : box_friction;
+        contact.restitution = lower < 0 ? floor_restitution : box_restitution;
         contact.key = {upper, lower, static_cast<std::uint64_t>(corner++)};
         problem.contacts.push_back(contact);
       }
