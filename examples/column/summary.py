@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """Per-phase summary of a log of examples/column/in.column (or examples/silo/in.silo):
 steps, wall time (sum of the runs' "Loop time"), wall time per step, mean solver sweeps per
-step, fraction of unconverged steps, then where the time went (the time-per-part tables fix
+step, fraction of unconverged steps, largest interpenetration and median residual of the
+thermo rows (thermo columns f_nscd[3] and f_nscd[2], where the log has them), then where the
+time went (the time-per-part tables fix
 nscd and fix wire print after each run, summed over the phase's runs: each part's average
 over the ranks in % of the wall time, and the busy share of the slowest rank, i.e. the wall
 time less the least time any rank spent in communication, waiting included), then the
@@ -73,7 +75,7 @@ def summarise(path):
             continue
         phase = int(data[-1, columns.index("v_phase")])
         p = phases.setdefault(phase, {"steps": 0, "seconds": 0.0, "sweeps": [], "unconverged": [],
-                                      "parts": {}, "least_communication": 0.0})
+                                      "residual": [], "overlap": [], "parts": {}, "least_communication": 0.0})
         p["steps"] += steps
         p["seconds"] += seconds
         for name, (low, average, _) in times.items():
@@ -83,11 +85,22 @@ def summarise(path):
             rows = data[1:]    # the first row repeats the state before the run
             p["sweeps"] += list(rows[:, columns.index("f_solver[1]")])
             p["unconverged"] += list(rows[:, columns.index("f_solver[2]")])
+        for column, key in (("f_nscd[2]", "residual"), ("f_nscd[3]", "overlap")):
+            if steps and column in columns:
+                p[key] += list(data[1:, columns.index(column)])
     return phases
 
 
 def mean(values):
     return sum(values) / len(values) if values else float("nan")
+
+
+def median(values):
+    ordered = sorted(values)
+    if not ordered:
+        return float("nan")
+    middle = len(ordered) // 2
+    return ordered[middle] if len(ordered) % 2 else 0.5 * (ordered[middle - 1] + ordered[middle])
 
 
 def main():
@@ -97,7 +110,8 @@ def main():
     parser.add_argument("--parts", help="write the time-per-part table of the phases here (CSV)")
     args = parser.parse_args()
     phases = summarise(args.log)
-    header = "phase,name,steps,wall_s,ms_per_step,mean_sweeps,unconverged_fraction"
+    header = ("phase,name,steps,wall_s,ms_per_step,mean_sweeps,unconverged_fraction,"
+              "largest_interpenetration,median_residual")
     rows = []
     for phase in sorted(phases):
         p = phases[phase]
@@ -105,10 +119,11 @@ def main():
             continue    # only a 'run 0' (e.g. the run left out above had the phase's steps)
         per_step = 1000 * p["seconds"] / p["steps"]
         rows.append(f"{phase},{NAMES.get(phase, '?')},{p['steps']},{p['seconds']:.1f},{per_step:.1f},"
-                    f"{mean(p['sweeps']):.1f},{mean(p['unconverged']):.3f}")
+                    f"{mean(p['sweeps']):.1f},{mean(p['unconverged']):.3f},"
+                    f"{max(p['overlap'], default=float('nan')):.2g},{median(p['residual']):.2g}")
     total_steps = sum(p["steps"] for p in phases.values())
     total_s = sum(p["seconds"] for p in phases.values())
-    rows.append(f"all,,{total_steps},{total_s:.1f},{1000 * total_s / max(total_steps, 1):.1f},,")
+    rows.append(f"all,,{total_steps},{total_s:.1f},{1000 * total_s / max(total_steps, 1):.1f},,,,")
     print(header)
     print("\n".join(rows))
     part_rows = part_table(phases)
