@@ -122,62 +122,96 @@ void store_states(WireNodeSet &nodes)
 
 namespace {
 
-// The arrays are walked in blocks small enough for all of them to stay in the L1 cache
-// between the lines of the predictor (or corrector) that read them.
-constexpr std::ptrdiff_t kBlock = 512;
-
-using Span = Eigen::Map<Eigen::ArrayXd>;
-using ConstSpan = Eigen::Map<const Eigen::ArrayXd>;
+// Two numbers at a time (one SSE2 register; Eigen picks the instructions of the machine).
+using Pair = Eigen::Array2d;
+template <class T> __attribute__((always_inline)) inline T load(const double *p) { return Eigen::Map<const T>(p); }
+template <class T> __attribute__((always_inline)) inline void store(const T &v, double *p)
+{
+  Eigen::Map<T> to(p);
+  to = v;
+}
 
 double *flat(std::vector<Vec3> &v) { return v.empty() ? nullptr : v[0].data(); }
 
+// The flat arrays as plain pointers that the compiler may keep in registers (they do not
+// alias each other nor anything the loops write).
+struct Derivatives {
+  double *__restrict r[6];
+  explicit Derivatives(std::array<std::vector<double>, 6> &a)
+  {
+    for (int k = 0; k < 6; ++k) r[k] = a[k].data();
+  }
+};
+
+// gear5_predict of numbers j .. j + T::size() - 1 of the flat arrays (T: Pair, or one
+// number as a 1 x 1 array for the last), with the predicted position and velocity.
+template <class T>
+__attribute__((always_inline)) inline void predict_numbers(const Derivatives &d, double *__restrict x,
+                                                           double *__restrict v, double dt, std::size_t j)
+{
+  const T r1 = load<T>(d.r[1] + j), r2 = load<T>(d.r[2] + j), r3 = load<T>(d.r[3] + j), r4 = load<T>(d.r[4] + j),
+          r5 = load<T>(d.r[5] + j);
+  const T p0 = load<T>(d.r[0] + j) + (r1 + r2 + r3 + r4 + r5);
+  const T p1 = r1 + (2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5);
+  store<T>(p0, d.r[0] + j);
+  store<T>(p1, d.r[1] + j);
+  store<T>(r2 + (3.0 * r3 + 6.0 * r4 + 10.0 * r5), d.r[2] + j);
+  store<T>(r3 + (4.0 * r4 + 10.0 * r5), d.r[3] + j);
+  store<T>(r4 + 5.0 * r5, d.r[4] + j);
+  store<T>(p0, x + j);
+  store<T>(p1 / dt, v + j);    // Gear5State::velocity
+}
+
+// gear5_correct of numbers j .. j + T::size() - 1 with a = force / mass.
+template <class T>
+__attribute__((always_inline)) inline void correct_numbers(const Derivatives &d, const double *__restrict f,
+                                                           const double *__restrict mass, double scale,
+                                                           const double *c, std::size_t j)
+{
+  const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - load<T>(d.r[2] + j);
+  store<T>(load<T>(d.r[0] + j) + c[0] * mismatch, d.r[0] + j);
+  store<T>(load<T>(d.r[1] + j) + c[1] * mismatch, d.r[1] + j);
+  store<T>(load<T>(d.r[2] + j) + c[2] * mismatch, d.r[2] + j);
+  store<T>(load<T>(d.r[3] + j) + c[3] * mismatch, d.r[3] + j);
+  store<T>(load<T>(d.r[4] + j) + c[4] * mismatch, d.r[4] + j);
+  store<T>(load<T>(d.r[5] + j) + c[5] * mismatch, d.r[5] + j);
+}
+
 }    // namespace
 
-// gear5_predict and the positions and velocities of the nodes, on blocks of the flat
-// arrays: the same operations on each number in the same order, so the same result to
-// the last bit.
+// gear5_predict and the positions and velocities of the nodes, number by number along the
+// flat arrays: the same operations on each number in the same order, so the same result
+// to the last bit.
 void predict_wire_nodes(WireNodeSet &nodes)
 {
-  Gear5Arrays &a = nodes.arrays;
-  const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(a.r[0].size());
+  const Derivatives d(nodes.arrays.r);
+  const std::size_t size = nodes.arrays.r[0].size();
   double *x = flat(nodes.positions), *v = flat(nodes.velocities);
-  for (std::ptrdiff_t start = 0; start < size; start += kBlock) {
-    const std::ptrdiff_t len = std::min(kBlock, size - start);
-    Span r0(a.r[0].data() + start, len), r1(a.r[1].data() + start, len), r2(a.r[2].data() + start, len),
-        r3(a.r[3].data() + start, len), r4(a.r[4].data() + start, len);
-    const ConstSpan r5(a.r[5].data() + start, len);
-    r0 += r1 + r2 + r3 + r4 + r5;
-    r1 += 2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5;
-    r2 += 3.0 * r3 + 6.0 * r4 + 10.0 * r5;
-    r3 += 4.0 * r4 + 10.0 * r5;
-    r4 += 5.0 * r5;
-    Span(x + start, len) = r0;
-    Span(v + start, len) = r1 / nodes.dt;    // Gear5State::velocity
-  }
+  const double dt = nodes.dt;
+  std::size_t j = 0;
+  for (; j + 2 <= size; j += 2) predict_numbers<Pair>(d, x, v, dt, j);
+  for (; j < size; ++j) predict_numbers<Eigen::Array<double, 1, 1>>(d, x, v, dt, j);
   for (Vec3 &f : nodes.forces) f.setZero();
 }
 
-// gear5_correct with a = force / mass on blocks of the flat arrays (the same operations
-// in the same order), then the fixed nodes put back at rest where they were.
-void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &c)
+// gear5_correct with a = force / mass along the flat arrays (the same operations in the
+// same order), then the fixed nodes put back at rest where they were.
+void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
 {
   Gear5Arrays &a = nodes.arrays;
-  const std::ptrdiff_t size = static_cast<std::ptrdiff_t>(a.r[0].size());
+  const Derivatives d(a.r);
+  const std::size_t size = a.r[0].size();
   const double *f = flat(nodes.forces);
   const double scale = 0.5 * nodes.dt * nodes.dt;
-  Eigen::Array<double, kBlock, 1> mismatch;
-  for (std::ptrdiff_t start = 0; start < size; start += kBlock) {
-    const std::ptrdiff_t len = std::min(kBlock, size - start);
-    auto m = mismatch.head(len);
-    m = scale * (ConstSpan(f + start, len) / ConstSpan(a.mass.data() + start, len)) -
-        ConstSpan(a.r[2].data() + start, len);
-    for (int k = 0; k < 6; ++k) Span(a.r[k].data() + start, len) += c[k] * m;
-  }
-  for (std::size_t j = 0; j < a.fixed.size(); ++j) {
-    const std::size_t i = static_cast<std::size_t>(a.fixed[j]);
-    for (int d = 0; d < 3; ++d) {
-      a.r[0][3 * i + d] = a.fixed_position[3 * j + d];
-      for (int k = 1; k < 6; ++k) a.r[k][3 * i + d] = 0.0;
+  const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
+  std::size_t j = 0;
+  for (; j + 2 <= size; j += 2) correct_numbers<Pair>(d, f, a.mass.data(), scale, c, j);
+  for (; j < size; ++j) correct_numbers<Eigen::Array<double, 1, 1>>(d, f, a.mass.data(), scale, c, j);
+  for (std::size_t n = 0; n < a.fixed.size(); ++n) {
+    const std::size_t i = static_cast<std::size_t>(a.fixed[n]);
+    for (int k = 0; k < 3; ++k) {
+      a.r[0][3 * i + k] = a.fixed_position[3 * n + k];
+      for (int m = 1; m < 6; ++m) a.r[m][3 * i + k] = 0.0;
     }
   }
 }
