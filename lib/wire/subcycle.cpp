@@ -177,6 +177,41 @@ __attribute__((always_inline)) inline void correct_numbers(const Derivatives &d,
   store<T>(load<T>(d.r[5] + j) + c[5] * mismatch, d.r[5] + j);
 }
 
+// correct_numbers then predict_numbers with the corrected numbers still in registers.
+template <class T>
+__attribute__((always_inline)) inline void correct_and_predict_numbers(const Derivatives &d, const double *__restrict f,
+                                                                       const double *__restrict mass, double scale,
+                                                                       const double *c, double *__restrict x,
+                                                                       double *__restrict v, double dt, std::size_t j)
+{
+  const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - load<T>(d.r[2] + j);
+  const T r0 = load<T>(d.r[0] + j) + c[0] * mismatch, r1 = load<T>(d.r[1] + j) + c[1] * mismatch,
+          r2 = load<T>(d.r[2] + j) + c[2] * mismatch, r3 = load<T>(d.r[3] + j) + c[3] * mismatch,
+          r4 = load<T>(d.r[4] + j) + c[4] * mismatch, r5 = load<T>(d.r[5] + j) + c[5] * mismatch;
+  const T p0 = r0 + (r1 + r2 + r3 + r4 + r5);
+  const T p1 = r1 + (2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5);
+  store<T>(p0, d.r[0] + j);
+  store<T>(p1, d.r[1] + j);
+  store<T>(r2 + (3.0 * r3 + 6.0 * r4 + 10.0 * r5), d.r[2] + j);
+  store<T>(r3 + (4.0 * r4 + 10.0 * r5), d.r[3] + j);
+  store<T>(r4 + 5.0 * r5, d.r[4] + j);
+  store<T>(r5, d.r[5] + j);
+  store<T>(p0, x + j);
+  store<T>(p1 / dt, v + j);
+}
+
+// The fixed nodes back at rest where they were (after a correction; r_1 .. r_5 zero).
+void hold_fixed_nodes(Gear5Arrays &a)
+{
+  for (std::size_t n = 0; n < a.fixed.size(); ++n) {
+    const std::size_t i = static_cast<std::size_t>(a.fixed[n]);
+    for (int k = 0; k < 3; ++k) {
+      a.r[0][3 * i + k] = a.fixed_position[3 * n + k];
+      for (int m = 1; m < 6; ++m) a.r[m][3 * i + k] = 0.0;
+    }
+  }
+}
+
 }    // namespace
 
 // gear5_predict and the positions and velocities of the nodes, number by number along the
@@ -207,13 +242,26 @@ void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coeffic
   std::size_t j = 0;
   for (; j + 2 <= size; j += 2) correct_numbers<Pair>(d, f, a.mass.data(), scale, c, j);
   for (; j < size; ++j) correct_numbers<Eigen::Array<double, 1, 1>>(d, f, a.mass.data(), scale, c, j);
-  for (std::size_t n = 0; n < a.fixed.size(); ++n) {
-    const std::size_t i = static_cast<std::size_t>(a.fixed[n]);
-    for (int k = 0; k < 3; ++k) {
-      a.r[0][3 * i + k] = a.fixed_position[3 * n + k];
-      for (int m = 1; m < 6; ++m) a.r[m][3 * i + k] = 0.0;
-    }
+  hold_fixed_nodes(a);
+}
+
+void correct_and_predict_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
+{
+  Gear5Arrays &a = nodes.arrays;
+  if (!a.fixed.empty()) {    // (they are put back between the two)
+    correct_wire_nodes(nodes, coefficients);
+    predict_wire_nodes(nodes);
+    return;
   }
+  const Derivatives d(a.r);
+  const std::size_t size = a.r[0].size();
+  double *f = flat(nodes.forces), *x = flat(nodes.positions), *v = flat(nodes.velocities);
+  const double scale = 0.5 * nodes.dt * nodes.dt, dt = nodes.dt;
+  const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
+  std::size_t j = 0;
+  for (; j + 2 <= size; j += 2) correct_and_predict_numbers<Pair>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+  for (; j < size; ++j) correct_and_predict_numbers<Eigen::Array<double, 1, 1>>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+  for (Vec3 &force : nodes.forces) force.setZero();
 }
 
 }    // namespace nscd::wire

@@ -108,6 +108,8 @@ void store_states(WireNodeSet &nodes);
 void predict_wire_nodes(WireNodeSet &nodes);
 // Corrects every free node with a = force / mass; fixed nodes stay put at rest.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);
+// correct_wire_nodes then predict_wire_nodes, in one pass over the arrays (the same result).
+void correct_and_predict_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);
 
 template <class ForceFn>
 void run_subcycle(const SubcyclePlan &plan, const std::array<double, 6> &coefficients,
@@ -115,12 +117,13 @@ void run_subcycle(const SubcyclePlan &plan, const std::array<double, 6> &coeffic
 {
   prepare_wire_nodes(nodes, plan.dt_sp);
   load_states(nodes);
+  predict_wire_nodes(nodes);
   for (int k = 0; k < plan.substeps; ++k) {
-    predict_wire_nodes(nodes);
     const SubstepInfo info{k, (k + 1) * plan.dt_sp, plan.dt_sp};
     compute_forces(info, nodes.positions, nodes.velocities, nodes.forces, grains);
     grains.count_substep();
-    correct_wire_nodes(nodes, coefficients);
+    if (k + 1 < plan.substeps) correct_and_predict_wire_nodes(nodes, coefficients);
+    else correct_wire_nodes(nodes, coefficients);
   }
   store_states(nodes);
 }

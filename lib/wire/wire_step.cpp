@@ -15,7 +15,8 @@ double seconds()
 ElasticEnergy WireStep::elastic_forces_now()
 {
   std::fill(nodes.forces.begin(), nodes.forces.end(), Vec3::Zero());
-  return add_elastic_forces(topology, nodes.positions, nodes.forces);
+  if (!elastic_.prepared_for(topology)) elastic_.prepare(topology);
+  return elastic_.add_forces(nodes.positions, nodes.forces, true);
 }
 
 StepTotals WireStep::run(const SubcyclePlan &plan, const std::array<double, 6> &corrector, Exchange &exchange,
