@@ -41,7 +41,7 @@ Vec3 unit_or_zero(const Vec3 &v)
 
 // atan(y) for 0 <= |y| <= tan(pi/8): y + y z P(z), z = y^2, P near-minimax (coefficients
 // from tools/wire_atan_coefficients.py: error within 1.02 x 2^-53 of atan(y)). T is double
-// or an Eigen array (ElasticKernel: four joints at a time, the same operations on each).
+// or an Eigen array (ElasticKernel: two joints at a time, the same operations on each).
 template <class T> __attribute__((always_inline)) inline T atan_small(const T &y)
 {
   static constexpr double c[] = {-0.3333333333333333,   0.1999999999999552,   -0.14285714284666542,
@@ -251,6 +251,8 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector
 /* ---------------------------------------------------------------------- ElasticKernel */
 
 namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "two nodes' forces are read as six numbers in a row");
 
 template <int L> using Lanes = Eigen::Array<double, L, 1>;
 template <int L> __attribute__((always_inline)) inline Lanes<L> lanes(const double *p) { return Eigen::Map<const Lanes<L>>(p); }
@@ -592,8 +594,6 @@ Vec3 ElasticKernel::share(const Share &s) const
   return Vec3::Zero();
 }
 
-// Each node's terms added in add_elastic_forces' order: for a node inside a chain, elements
-// (v - 1, v) and (v, v + 1), then the joints at v - 1, v and v + 1.
 namespace {
 
 // One coordinate of the forces on L nodes inside a chain: elements e - 1 and e, joints j - 1,
@@ -612,6 +612,8 @@ __attribute__((always_inline)) inline Lanes<L> chain_node_sum(Lanes<L> sum, cons
 
 }    // namespace
 
+// Each node's terms added in add_elastic_forces' order: for a node inside a chain, elements
+// (v - 1, v) and (v, v + 1), then the joints at v - 1, v and v + 1.
 void ElasticKernel::sum_per_node(std::vector<Vec3> &forces) const
 {
   const double *on_b[3] = {on_b_[0].data(), on_b_[1].data(), on_b_[2].data()};

@@ -96,11 +96,12 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector
 // add_elastic_forces (each element's law and each joint's k_rot) for one topology, prepared
 // once and then evaluated every substep: every force and energy equal to add_elastic_forces'
 // to the last bit (each law's operations in the same order, each node's forces summed in the
-// same order), in a fraction of its time on the wire's chains. A run of elements (i, i+1),
+// same order), in under half its time on the wire's chains. A run of elements (i, i+1),
 // (i+1, i+2), ... listed one after the other, and of joints (i, i+1, i+2), ... likewise, is
-// evaluated four at a time on contiguous arrays (Eigen), each element's direction and length
-// once for its law and both its joints; the rest one by one with add_elastic_forces' laws.
-// All results go to arrays first and are then summed per node in add_elastic_forces' order.
+// evaluated two at a time on contiguous arrays (Eigen Array2d), each element's direction
+// and length once for its law and both its joints; the rest one by one with
+// add_elastic_forces' laws. All results go to arrays first and are then summed per node in
+// add_elastic_forces' order. Details: doc/wire_model.md section 2b.
 class ElasticKernel {
  public:
   // Throws std::invalid_argument for a rest length <= 0 or a negative node index.

@@ -131,6 +131,7 @@ template <class T> __attribute__((always_inline)) inline void store(const T &v, 
   to = v;
 }
 
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "a vector of Vec3 is read as 3 N numbers in a row");
 double *flat(std::vector<Vec3> &v) { return v.empty() ? nullptr : v[0].data(); }
 
 // The flat arrays as plain pointers that the compiler may keep in registers (they do not
@@ -143,61 +144,64 @@ struct Derivatives {
   }
 };
 
-// gear5_predict of numbers j .. j + T::size() - 1 of the flat arrays (T: Pair, or one
-// number as a 1 x 1 array for the last), with the predicted position and velocity.
-template <class T>
-__attribute__((always_inline)) inline void predict_numbers(const Derivatives &d, double *__restrict x,
-                                                           double *__restrict v, double dt, std::size_t j)
+// gear5_predict's Taylor shift of one number's six scaled derivatives (the same
+// operations in the same order: each line reads only higher, not yet shifted ones).
+template <class T> __attribute__((always_inline)) inline void shift(T &r0, T &r1, T &r2, T &r3, T &r4, const T &r5)
 {
-  const T r1 = load<T>(d.r[1] + j), r2 = load<T>(d.r[2] + j), r3 = load<T>(d.r[3] + j), r4 = load<T>(d.r[4] + j),
-          r5 = load<T>(d.r[5] + j);
-  const T p0 = load<T>(d.r[0] + j) + (r1 + r2 + r3 + r4 + r5);
-  const T p1 = r1 + (2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5);
-  store<T>(p0, d.r[0] + j);
-  store<T>(p1, d.r[1] + j);
-  store<T>(r2 + (3.0 * r3 + 6.0 * r4 + 10.0 * r5), d.r[2] + j);
-  store<T>(r3 + (4.0 * r4 + 10.0 * r5), d.r[3] + j);
-  store<T>(r4 + 5.0 * r5, d.r[4] + j);
-  store<T>(p0, x + j);
-  store<T>(p1 / dt, v + j);    // Gear5State::velocity
+  r0 = r0 + (r1 + r2 + r3 + r4 + r5);
+  r1 = r1 + (2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5);
+  r2 = r2 + (3.0 * r3 + 6.0 * r4 + 10.0 * r5);
+  r3 = r3 + (4.0 * r4 + 10.0 * r5);
+  r4 = r4 + 5.0 * r5;
 }
 
-// gear5_correct of numbers j .. j + T::size() - 1 with a = force / mass.
-template <class T>
-__attribute__((always_inline)) inline void correct_numbers(const Derivatives &d, const double *__restrict f,
-                                                           const double *__restrict mass, double scale,
-                                                           const double *c, std::size_t j)
+// Numbers j .. j + T::size() - 1 of the flat arrays (T: Pair, or one number as a 1 x 1
+// array for the last): gear5_correct with a = force / mass if `correct`, then
+// gear5_predict with the predicted position and velocity if `predict`.
+template <class T, bool correct, bool predict>
+__attribute__((always_inline)) inline void step_numbers(const Derivatives &d, const double *__restrict f,
+                                                        const double *__restrict mass, double scale, const double *c,
+                                                        double *__restrict x, double *__restrict v, double dt,
+                                                        std::size_t j)
 {
-  const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - load<T>(d.r[2] + j);
-  store<T>(load<T>(d.r[0] + j) + c[0] * mismatch, d.r[0] + j);
-  store<T>(load<T>(d.r[1] + j) + c[1] * mismatch, d.r[1] + j);
-  store<T>(load<T>(d.r[2] + j) + c[2] * mismatch, d.r[2] + j);
-  store<T>(load<T>(d.r[3] + j) + c[3] * mismatch, d.r[3] + j);
-  store<T>(load<T>(d.r[4] + j) + c[4] * mismatch, d.r[4] + j);
-  store<T>(load<T>(d.r[5] + j) + c[5] * mismatch, d.r[5] + j);
+  T r0 = load<T>(d.r[0] + j), r1 = load<T>(d.r[1] + j), r2 = load<T>(d.r[2] + j), r3 = load<T>(d.r[3] + j),
+    r4 = load<T>(d.r[4] + j), r5 = load<T>(d.r[5] + j);
+  if (correct) {
+    const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - r2;
+    r0 = r0 + c[0] * mismatch;
+    r1 = r1 + c[1] * mismatch;
+    r2 = r2 + c[2] * mismatch;
+    r3 = r3 + c[3] * mismatch;
+    r4 = r4 + c[4] * mismatch;
+    r5 = r5 + c[5] * mismatch;
+    store<T>(r5, d.r[5] + j);
+  }
+  if (predict) {
+    shift<T>(r0, r1, r2, r3, r4, r5);
+    store<T>(r0, x + j);
+    store<T>(r1 / dt, v + j);    // Gear5State::velocity
+  }
+  store<T>(r0, d.r[0] + j);
+  store<T>(r1, d.r[1] + j);
+  store<T>(r2, d.r[2] + j);
+  store<T>(r3, d.r[3] + j);
+  store<T>(r4, d.r[4] + j);
 }
 
-// correct_numbers then predict_numbers with the corrected numbers still in registers.
-template <class T>
-__attribute__((always_inline)) inline void correct_and_predict_numbers(const Derivatives &d, const double *__restrict f,
-                                                                       const double *__restrict mass, double scale,
-                                                                       const double *c, double *__restrict x,
-                                                                       double *__restrict v, double dt, std::size_t j)
+// step_numbers along all the flat arrays.
+template <bool correct, bool predict> void step_all(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
 {
-  const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - load<T>(d.r[2] + j);
-  const T r0 = load<T>(d.r[0] + j) + c[0] * mismatch, r1 = load<T>(d.r[1] + j) + c[1] * mismatch,
-          r2 = load<T>(d.r[2] + j) + c[2] * mismatch, r3 = load<T>(d.r[3] + j) + c[3] * mismatch,
-          r4 = load<T>(d.r[4] + j) + c[4] * mismatch, r5 = load<T>(d.r[5] + j) + c[5] * mismatch;
-  const T p0 = r0 + (r1 + r2 + r3 + r4 + r5);
-  const T p1 = r1 + (2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5);
-  store<T>(p0, d.r[0] + j);
-  store<T>(p1, d.r[1] + j);
-  store<T>(r2 + (3.0 * r3 + 6.0 * r4 + 10.0 * r5), d.r[2] + j);
-  store<T>(r3 + (4.0 * r4 + 10.0 * r5), d.r[3] + j);
-  store<T>(r4 + 5.0 * r5, d.r[4] + j);
-  store<T>(r5, d.r[5] + j);
-  store<T>(p0, x + j);
-  store<T>(p1 / dt, v + j);
+  Gear5Arrays &a = nodes.arrays;
+  const Derivatives d(a.r);
+  const std::size_t size = a.r[0].size();
+  const double *f = nodes.forces.empty() ? nullptr : nodes.forces[0].data();
+  double *x = flat(nodes.positions), *v = flat(nodes.velocities);
+  const double scale = 0.5 * nodes.dt * nodes.dt, dt = nodes.dt;
+  const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
+  std::size_t j = 0;
+  for (; j + 2 <= size; j += 2) step_numbers<Pair, correct, predict>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+  for (; j < size; ++j)
+    step_numbers<Eigen::Array<double, 1, 1>, correct, predict>(d, f, a.mass.data(), scale, c, x, v, dt, j);
 }
 
 // The fixed nodes back at rest where they were (after a correction; r_1 .. r_5 zero).
@@ -216,16 +220,10 @@ void hold_fixed_nodes(Gear5Arrays &a)
 
 // gear5_predict and the positions and velocities of the nodes, number by number along the
 // flat arrays: the same operations on each number in the same order, so the same result
-// to the last bit.
+// to the last bit. All forces zeroed.
 void predict_wire_nodes(WireNodeSet &nodes)
 {
-  const Derivatives d(nodes.arrays.r);
-  const std::size_t size = nodes.arrays.r[0].size();
-  double *x = flat(nodes.positions), *v = flat(nodes.velocities);
-  const double dt = nodes.dt;
-  std::size_t j = 0;
-  for (; j + 2 <= size; j += 2) predict_numbers<Pair>(d, x, v, dt, j);
-  for (; j < size; ++j) predict_numbers<Eigen::Array<double, 1, 1>>(d, x, v, dt, j);
+  step_all<false, true>(nodes, {});
   for (Vec3 &f : nodes.forces) f.setZero();
 }
 
@@ -233,35 +231,19 @@ void predict_wire_nodes(WireNodeSet &nodes)
 // same order), then the fixed nodes put back at rest where they were.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
 {
-  Gear5Arrays &a = nodes.arrays;
-  const Derivatives d(a.r);
-  const std::size_t size = a.r[0].size();
-  const double *f = flat(nodes.forces);
-  const double scale = 0.5 * nodes.dt * nodes.dt;
-  const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
-  std::size_t j = 0;
-  for (; j + 2 <= size; j += 2) correct_numbers<Pair>(d, f, a.mass.data(), scale, c, j);
-  for (; j < size; ++j) correct_numbers<Eigen::Array<double, 1, 1>>(d, f, a.mass.data(), scale, c, j);
-  hold_fixed_nodes(a);
+  step_all<true, false>(nodes, coefficients);
+  hold_fixed_nodes(nodes.arrays);
 }
 
 void correct_and_predict_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
 {
-  Gear5Arrays &a = nodes.arrays;
-  if (!a.fixed.empty()) {    // (they are put back between the two)
+  if (!nodes.arrays.fixed.empty()) {    // (they are put back between the two)
     correct_wire_nodes(nodes, coefficients);
     predict_wire_nodes(nodes);
     return;
   }
-  const Derivatives d(a.r);
-  const std::size_t size = a.r[0].size();
-  double *f = flat(nodes.forces), *x = flat(nodes.positions), *v = flat(nodes.velocities);
-  const double scale = 0.5 * nodes.dt * nodes.dt, dt = nodes.dt;
-  const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
-  std::size_t j = 0;
-  for (; j + 2 <= size; j += 2) correct_and_predict_numbers<Pair>(d, f, a.mass.data(), scale, c, x, v, dt, j);
-  for (; j < size; ++j) correct_and_predict_numbers<Eigen::Array<double, 1, 1>>(d, f, a.mass.data(), scale, c, x, v, dt, j);
-  for (Vec3 &force : nodes.forces) force.setZero();
+  step_all<true, true>(nodes, coefficients);
+  for (Vec3 &f : nodes.forces) f.setZero();
 }
 
 }    // namespace nscd::wire

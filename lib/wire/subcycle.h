@@ -62,9 +62,9 @@ class GrainForceAccumulator {
 
 // The Gear states of the integrated nodes while a subcycle runs, as six flat arrays (r_k of
 // node i at 3 i .. 3 i + 2): the predictor and the corrector are then the same few
-// operations on 3 N numbers in a row, which Eigen does two or four at a time, instead of
-// 6 x 3 numbers per node at scattered places (the per-node Gear5State took 13 % of fix
-// wire's time). Filled from WireNodeSet::state before the substeps and written back after.
+// operations on 3 N numbers in a row, two at a time (Eigen Array2d), instead of 6 x 3
+// numbers per node in a Gear5State (the integration took 13 % of fix wire's time that way).
+// Filled from WireNodeSet::state before the substeps and written back after.
 struct Gear5Arrays {
   std::array<std::vector<double>, 6> r;
   std::vector<double> mass;              // each node's mass, three times (one per coordinate)
