@@ -84,40 +84,38 @@ BENCHMARK(BM_WireSubcycle)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 // The elastic forces of one wavy chain of N nodes: add_elastic_forces against the prepared
 // ElasticKernel (the same forces to the last bit: tests/unit/wire/test_elastic_forces.cpp).
 // Counter: ns per node.
-static std::vector<Vec3> wavy_chain(int n, double l)
+struct WavyChain {
+  WireTopology topology;
+  std::vector<Vec3> x, f;
+  explicit WavyChain(int n) : topology(open_chain_topology(n, 0.01)), x(n), f(n, Vec3::Zero())
+  {
+    for (WireElement &e : topology.elements) e.law = AxialLaw{10.0, true};
+    for (WireJoint &j : topology.joints) j.k_rot = 1e-4;
+    for (int i = 0; i < n; ++i) x[i] = Vec3(i * 0.01 * 0.999, 0.02 * std::sin(0.05 * i), 0.01 * std::cos(0.03 * i));
+  }
+};
+
+static void count_per_node(benchmark::State &state, std::size_t nodes)
 {
-  std::vector<Vec3> x(n);
-  for (int i = 0; i < n; ++i) x[i] = Vec3(i * l * 0.999, 0.02 * std::sin(0.05 * i), 0.01 * std::cos(0.03 * i));
-  return x;
+  state.counters["ns_per_node"] = benchmark::Counter(static_cast<double>(nodes) * state.iterations(),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 static void BM_ElasticForces(benchmark::State &state)
 {
-  const int n = static_cast<int>(state.range(0));
-  WireTopology topology = open_chain_topology(n, 0.01);
-  for (WireElement &e : topology.elements) e.law = AxialLaw{10.0, true};
-  for (WireJoint &j : topology.joints) j.k_rot = 1e-4;
-  const std::vector<Vec3> x = wavy_chain(n, 0.01);
-  std::vector<Vec3> f(n, Vec3::Zero());
-  for (auto _ : state) benchmark::DoNotOptimize(add_elastic_forces(topology, x, f));
-  state.counters["ns_per_node"] = benchmark::Counter(static_cast<double>(n) * state.iterations(),
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  WavyChain chain(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(add_elastic_forces(chain.topology, chain.x, chain.f));
+  count_per_node(state, chain.x.size());
 }
 BENCHMARK(BM_ElasticForces)->Arg(1000);
 
 static void BM_ElasticKernel(benchmark::State &state)
 {
-  const int n = static_cast<int>(state.range(0));
-  WireTopology topology = open_chain_topology(n, 0.01);
-  for (WireElement &e : topology.elements) e.law = AxialLaw{10.0, true};
-  for (WireJoint &j : topology.joints) j.k_rot = 1e-4;
-  const std::vector<Vec3> x = wavy_chain(n, 0.01);
-  std::vector<Vec3> f(n, Vec3::Zero());
+  WavyChain chain(static_cast<int>(state.range(0)));
   ElasticKernel kernel;
-  kernel.prepare(topology);
-  for (auto _ : state) benchmark::DoNotOptimize(kernel.add_forces(x, f, false));
-  state.counters["ns_per_node"] = benchmark::Counter(static_cast<double>(n) * state.iterations(),
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  kernel.prepare(chain.topology);
+  for (auto _ : state) benchmark::DoNotOptimize(kernel.add_forces(chain.x, chain.f, false));
+  count_per_node(state, chain.x.size());
 }
 BENCHMARK(BM_ElasticKernel)->Arg(1000);
 
