@@ -81,4 +81,42 @@ static void BM_WireSubcycle(benchmark::State &state)
 }
 BENCHMARK(BM_WireSubcycle)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
+// The elastic forces of one wavy chain of N nodes: add_elastic_forces against the prepared
+// ElasticKernel (the same forces to the last bit: tests/unit/wire/test_elastic_forces.cpp).
+// Counter: ns per node.
+struct WavyChain {
+  WireTopology topology;
+  std::vector<Vec3> x, f;
+  explicit WavyChain(int n) : topology(open_chain_topology(n, 0.01)), x(n), f(n, Vec3::Zero())
+  {
+    for (WireElement &e : topology.elements) e.law = AxialLaw{10.0, true};
+    for (WireJoint &j : topology.joints) j.k_rot = 1e-4;
+    for (int i = 0; i < n; ++i) x[i] = Vec3(i * 0.01 * 0.999, 0.02 * std::sin(0.05 * i), 0.01 * std::cos(0.03 * i));
+  }
+};
+
+static void count_per_node(benchmark::State &state, std::size_t nodes)
+{
+  state.counters["ns_per_node"] = benchmark::Counter(static_cast<double>(nodes) * state.iterations(),
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+static void BM_ElasticForces(benchmark::State &state)
+{
+  WavyChain chain(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(add_elastic_forces(chain.topology, chain.x, chain.f));
+  count_per_node(state, chain.x.size());
+}
+BENCHMARK(BM_ElasticForces)->Arg(1000);
+
+static void BM_ElasticKernel(benchmark::State &state)
+{
+  WavyChain chain(static_cast<int>(state.range(0)));
+  ElasticKernel kernel;
+  kernel.prepare(chain.topology);
+  for (auto _ : state) benchmark::DoNotOptimize(kernel.add_forces(chain.x, chain.f, false));
+  count_per_node(state, chain.x.size());
+}
+BENCHMARK(BM_ElasticKernel)->Arg(1000);
+
 BENCHMARK_MAIN();

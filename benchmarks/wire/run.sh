@@ -14,7 +14,10 @@
 # build's fix wire time, fix nscd and the rest being the same work).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-lmp=${LMP:-$here/../../build/lmp}
+absolute() {    # a path given relative to the caller's folder (the runs cd to WORK); a bare name stays
+  case $1 in */*) echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")" ;; *) echo "$1" ;; esac
+}
+lmp=$(absolute "${LMP:-$here/../../build/lmp}")
 mpirun=${MPIRUN:-mpirun}
 steps=${1:-100}
 work=${WORK:-$here/work}
@@ -43,7 +46,7 @@ run() {    # label, log name, fix wire's skin option, launcher words...
 run "1 rank" one_rank.log "skin $skin" "$lmp"
 run "2 ranks" two_ranks.log "skin $skin" $mpirun -np 2 "$lmp"
 if [ -n "${LMP_BEFORE:-}" ]; then    # (a fix wire without the skin option)
-  run "1 rank, LMP_BEFORE" before.log "" "$LMP_BEFORE"
+  run "1 rank, LMP_BEFORE" before.log "" "$(absolute "$LMP_BEFORE")"
 fi
 echo
 echo "machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -57,10 +57,16 @@ std::uint32_t segment_feature_at(double s)
   return edge_feature(0, 1);
 }
 
-// Answer in the grain's body frame, before it goes to the world frame.
+// Answer in the grain's body frame, written where the caller's world-frame answer goes
+// (to_world turns it in place). An answer function that gives up writes nothing.
 struct BodyAnswer {
-  SegmentGrainContact contact;
+  SegmentGrainContact &contact;
   double smallest_gap = 0.0;
+  void start()    // before the first point
+  {
+    contact = SegmentGrainContact{};
+    smallest_gap = INFINITY;
+  }
 };
 
 // Adds the point on the segment `core_point` (body frame) with its closest core point
@@ -115,13 +121,11 @@ bool sides_of(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b
 // The face case of contact_segment_grain for face f (the contact axis is f's normal): the
 // segment clipped by f's side planes, each end over the face or where the segment leaves
 // the face's prism. False where round-off could decide otherwise.
-bool clip_to_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec3 &b, const Scales &scale,
-                  double wire_radius, double activation, BodyAnswer &out)
+bool clip_to_face(const ShapeFeatures &features, int f, const FaceSides &sides, const Vec3 &a, const Vec3 &b,
+                  const Scales &scale, double wire_radius, double activation, BodyAnswer &out)
 {
   const Spheropolyhedron &shape = features.shape();
   const Face &face = shape.faces[f];
-  FaceSides sides;
-  if (!sides_of(features, f, a, b, scale, sides)) return false;
   const ShapeFeatures::FaceInfo &info = features.face(f);
   const double guard = kDecisionMargin * scale.length;
   const Vec3 end[2] = {a, b};
@@ -145,8 +149,7 @@ bool clip_to_face(const ShapeFeatures &features, int f, const Vec3 &a, const Vec
   }
   if ((core_point[1] - core_point[0]).norm() <= 4.0 * scale.merge) return false;    // would merge
 
-  out = BodyAnswer{};
-  out.smallest_gap = INFINITY;
+  out.start();
   for (int e = 0; e < 2; ++e) {
     const double height = face.normal.dot(core_point[e]) - face.offset;
     add_point(a, b, core_point[e], face.normal, height, shape.radius, wire_radius, activation, key[e], out);
@@ -176,12 +179,14 @@ bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const
     const int f = shape.edge_faces[e][k];
     const double misalignment = 1.0 - shape.faces[f].normal.dot(d) / distance;
     // (the band leaves room for the round-off of the direction contact_segment_grain gets)
-    if (misalignment <= (1.0 - 1e-4) * Tolerance::kFaceAlign)
-      return clip_to_face(features, f, a, b, scale, wire_radius, activation, out);
+    if (misalignment <= (1.0 - 1e-4) * Tolerance::kFaceAlign) {
+      FaceSides sides;
+      return sides_of(features, f, a, b, scale, sides) &&
+             clip_to_face(features, f, sides, a, b, scale, wire_radius, activation, out);
+    }
     if (misalignment < (1.0 + 1e-4) * Tolerance::kFaceAlign) return false;
   }
-  out = BodyAnswer{};
-  out.smallest_gap = INFINITY;
+  out.start();
   add_point(a, b, c.point_a, d / distance, distance, shape.radius, wire_radius, activation,
             make_key(segment_feature_at(c.s), edge_feature(edge.v0, edge.v1)), out);
   return true;
@@ -200,7 +205,7 @@ bool answer_from_face(const ShapeFeatures &features, int f, const Vec3 &a, const
   FaceSides sides;
   if (!sides_of(features, f, a, b, scale, sides)) return false;
   const int low = height[0] <= height[1] ? 0 : 1;
-  if (sides.exit[low] < 0) return clip_to_face(features, f, a, b, scale, wire_radius, activation, out);
+  if (sides.exit[low] < 0) return clip_to_face(features, f, sides, a, b, scale, wire_radius, activation, out);
   const ShapeFeatures::Side &side = features.side(features.face(f).first_side + sides.exit[low]);
   return answer_from_edge(features, side.edge, a, b, scale, wire_radius, activation, out);
 }
@@ -222,8 +227,7 @@ bool answer_from_vertex(const ShapeFeatures &features, int v, const Vec3 &a, con
     const Vec3 along = shape.vertices[neighbour[k]] - p;
     if (along.dot(d) >= -kAngleMargin * distance * along.norm()) return false;
   }
-  out = BodyAnswer{};
-  out.smallest_gap = INFINITY;
+  out.start();
   add_point(a, b, on_segment, d / distance, distance, shape.radius, wire_radius, activation,
             make_key(segment_feature_at(s), vertex_feature(v)), out);
   return true;
@@ -342,16 +346,14 @@ int ShapeFeatures::edge_between(int a, int b) const
 
 namespace {
 
-// The body-frame answer in the world frame.
-TrackedSegmentContact &to_world(const BodyAnswer &body, const GrainFrame &frame, TrackedSegmentContact &out)
+// The body-frame answer turned to the world frame.
+void to_world(const GrainFrame &frame, SegmentGrainContact &contact)
 {
-  out.contact = body.contact;
-  for (int k = 0; k < out.contact.count; ++k) {
-    SegmentContact &p = out.contact.points[k];
+  for (int k = 0; k < contact.count; ++k) {
+    SegmentContact &p = contact.points[k];
     p.point = frame.rotation * p.point + frame.centre;
     p.normal = frame.rotation * p.normal;
   }
-  return out;
 }
 
 }    // namespace
@@ -363,14 +365,15 @@ TrackedSegmentContact contact_segment_grain_tracked(const Segment &segment, cons
   const Mat3 to_body = frame.rotation.transpose();
   const Vec3 a = to_body * (segment.p0 - frame.centre), b = to_body * (segment.p1 - frame.centre);
   TrackedSegmentContact out;
-  BodyAnswer body;
+  BodyAnswer body{out.contact};
   const Spheropolyhedron &shape = features.shape();
   const bool valid = segment.p0.allFinite() && segment.p1.allFinite() && segment.radius >= 0.0 &&
                      std::isfinite(activation) && activation >= 0.0;
   out.from_hint = valid && answer_from_hint(features, hint, a, b, segment.radius, activation, body);
   if (out.from_hint) {
     out.clearance = body.smallest_gap;
-    return to_world(body, frame, out);
+    to_world(frame, out.contact);
+    return out;
   }
   // Nothing within the activation distance (most candidate pairs): the core distance says so.
   if (valid && !shape.vertices.empty()) {
@@ -383,14 +386,15 @@ TrackedSegmentContact contact_segment_grain_tracked(const Segment &segment, cons
       return out;
     }
   }
-  body.contact = contact_segment_grain({a, b, segment.radius}, shape, Pose(), activation, workspace);
-  if (!body.contact.empty()) hint = hint_from(features, body.contact);    // else keep the last one
+  out.contact = contact_segment_grain({a, b, segment.radius}, shape, Pose(), activation, workspace);
+  if (!out.contact.empty()) hint = hint_from(features, out.contact);    // else keep the last one
   // Nothing within the activation distance: every gap is larger, and larger than the gap of
   // the bounding spheres.
   const double bounding_gap = (0.5 * (a + b)).norm() - 0.5 * (b - a).norm() - segment.radius - shape.bounding_radius;
   out.clearance = std::max(activation, bounding_gap);
-  for (const SegmentContact &p : body.contact) out.clearance = std::min(out.clearance, p.gap);
-  return to_world(body, frame, out);
+  for (const SegmentContact &p : out.contact) out.clearance = std::min(out.clearance, p.gap);
+  to_world(frame, out.contact);
+  return out;
 }
 
 }    // namespace nscd

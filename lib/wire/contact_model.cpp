@@ -42,6 +42,16 @@ double farther_squared(const Vec3 &x1, const Vec3 &seen1, const Vec3 &x2, const 
   return std::max((x1 - seen1).squaredNorm(), (x2 - seen2).squaredNorm());
 }
 
+// The smallest threshold of a group's watches, NaN if one is (a NaN threshold is no
+// reason to skip a pair).
+template <class Watch> double smallest_threshold(const std::vector<Watch> &watch, int first, int count)
+{
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int k = first; k < first + count; ++k)
+    if (!(watch[k].threshold >= smallest)) smallest = watch[k].threshold;
+  return smallest;
+}
+
 bool lower_element(const ElementCopy &a, const ElementCopy &b)
 {
   return a.id_a < b.id_a || (a.id_a == b.id_a && a.id_b < b.id_b);
@@ -116,6 +126,7 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
       grain_watch_[k].threshold -= moved[grain_pairs_[k].grain];
       grain_pairs_[k].seen_gap -= moved[grain_pairs_[k].grain];
     }
+    for (WatchGroup &g : grain_groups_) g.threshold = smallest_threshold(grain_watch_, g.first, g.count);
   }
   records_.clear();
   record_of_.clear();
@@ -156,6 +167,7 @@ bool ContactModel::lists_outdated(const std::vector<Vec3> &x, double tau)
     moved_[k] = (x[k] - built_at_[k]).norm();
     node = std::max(node, moved_[k]);
   }
+  largest_moved_ = node;
   const double other = std::max(other_moved_, boundary_travel_ + fastest_boundary_ * tau);
   return node + std::max(node, other) > skin_;
 }
@@ -171,8 +183,10 @@ void ContactModel::carry_memories()
   carry(boundary_pairs_);
   grain_pairs_.clear();
   grain_watch_.clear();
+  grain_groups_.clear();
   wire_pairs_.clear();
   wire_watch_.clear();
+  wire_groups_.clear();
   boundary_pairs_.clear();
   lists_valid_ = false;
 }
@@ -197,6 +211,7 @@ void ContactModel::rebuild(const std::vector<Vec3> &x, double tau)
   carried_.clear();    // contacts that are no candidates any more are open
   built_at_ = x;
   moved_.assign(x.size(), 0.0);
+  largest_moved_ = 0.0;
   grains_built_at_.clear();
   for (const GrainCopy &g : scene_.grains) grains_built_at_.push_back(g.pose);
   boundary_travel_ = -fastest_boundary_ * tau;
@@ -239,6 +254,7 @@ void ContactModel::find_grain_pairs(const std::vector<Vec3> &x)
     std::sort(found.begin(), found.end(), [](const Found &p, const Found &q) {
       return p.id != q.id ? p.id < q.id : p.distance < q.distance;
     });
+    const int first = static_cast<int>(grain_pairs_.size());
     for (size_t k = 0; k < found.size(); ++k) {
       if (k > 0 && found[k].id == found[k - 1].id) continue;    // a farther copy
       GrainPair p{};
@@ -249,6 +265,8 @@ void ContactModel::find_grain_pairs(const std::vector<Vec3> &x)
       grain_pairs_.push_back(p);
       grain_watch_.push_back({e.a, e.b, 0.0});
     }
+    const int count = static_cast<int>(grain_pairs_.size()) - first;
+    if (count > 0) grain_groups_.push_back({e.a, e.b, first, count, 0.0});
   }
 }
 
@@ -289,6 +307,7 @@ void ContactModel::find_wire_pairs(const std::vector<Vec3> &x)
       if (p.id_b != q.id_b) return p.id_b < q.id_b;
       return p.distance < q.distance;
     });
+    const int first = static_cast<int>(wire_pairs_.size());
     for (size_t k = 0; k < found.size(); ++k) {
       if (k > 0 && found[k].id_a == found[k - 1].id_a && found[k].id_b == found[k - 1].id_b) continue;
       const ElementCopy &B = elements[found[k].element];
@@ -301,6 +320,8 @@ void ContactModel::find_wire_pairs(const std::vector<Vec3> &x)
       wire_pairs_.push_back(p);
       wire_watch_.push_back({A.a, A.b, B.a, B.b, 0.0});
     }
+    const int count = static_cast<int>(wire_pairs_.size()) - first;
+    if (count > 0) wire_groups_.push_back({A.a, A.b, first, count, 0.0});
   }
 }
 
@@ -329,22 +350,38 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
   recorded_substeps_ += recording_ ? 1 : 0;
   ContactTotals out;
   const double *moved = moved_.data();
-  for (size_t k = 0; k < grain_watch_.size(); ++k) {
-    const GrainWatch &w = grain_watch_[k];
-    if (std::max(moved[w.a], moved[w.b]) < w.threshold) continue;    // cannot touch yet
-    GrainPair &p = grain_pairs_[k];
-    if (p.seen_gap > 0.0 && farther_squared(x[p.a], p.seen[0], x[p.b], p.seen[1]) < p.seen_gap * p.seen_gap) continue;
-    out.wire_grain += grain_contact(p, grain_watch_[k], x, v, dt, f, reactions, out);
+  for (WatchGroup &g : grain_groups_) {
+    const double element_moved = std::max(moved[g.a], moved[g.b]);    // (each watch's a and b are the group's)
+    if (element_moved < g.threshold) continue;                         // no pair of it can touch yet
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int k = g.first; k < g.first + g.count; ++k) {
+      GrainWatch &w = grain_watch_[k];
+      if (!(element_moved < w.threshold)) {    // else it cannot touch yet
+        GrainPair &p = grain_pairs_[k];
+        if (!(p.seen_gap > 0.0 && farther_squared(x[p.a], p.seen[0], x[p.b], p.seen[1]) < p.seen_gap * p.seen_gap))
+          out.wire_grain += grain_contact(p, w, x, v, dt, f, reactions, out);
+      }
+      if (!(w.threshold >= smallest)) smallest = w.threshold;    // (NaN stays)
+    }
+    g.threshold = smallest;
   }
-  for (size_t k = 0; k < wire_watch_.size(); ++k) {
-    const WireWatch &w = wire_watch_[k];
-    if (std::max(moved[w.a1], moved[w.a2]) + std::max(moved[w.b1], moved[w.b2]) < w.threshold) continue;
-    WirePair &p = wire_pairs_[k];
-    if (p.seen_gap > 0.0 && std::sqrt(farther_squared(x[p.a1], p.seen[0], x[p.a2], p.seen[1])) +
-                                    std::sqrt(farther_squared(x[p.b1], p.seen[2], x[p.b2], p.seen[3])) <
-                                p.seen_gap)
-      continue;
-    out.wire_wire += wire_contact(p, wire_watch_[k], x, v, dt, f, out);
+  for (WatchGroup &g : wire_groups_) {
+    const double element_moved = std::max(moved[g.a], moved[g.b]);    // (each watch's a1 and a2 are the group's)
+    // (a + largest >= a + b in floating point too: rounding keeps the order)
+    if (element_moved + largest_moved_ < g.threshold) continue;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int k = g.first; k < g.first + g.count; ++k) {
+      WireWatch &w = wire_watch_[k];
+      if (!(element_moved + std::max(moved[w.b1], moved[w.b2]) < w.threshold)) {
+        WirePair &p = wire_pairs_[k];
+        if (!(p.seen_gap > 0.0 && std::sqrt(farther_squared(x[p.a1], p.seen[0], x[p.a2], p.seen[1])) +
+                                          std::sqrt(farther_squared(x[p.b1], p.seen[2], x[p.b2], p.seen[3])) <
+                                      p.seen_gap))
+          out.wire_wire += wire_contact(p, w, x, v, dt, f, out);
+      }
+      if (!(w.threshold >= smallest)) smallest = w.threshold;
+    }
+    g.threshold = smallest;
   }
   for (BoundaryPair &p : boundary_pairs_) out.wire_boundary += boundary_contact(p, x, v, tau, dt, f, reactions, out);
   return out;

@@ -235,6 +235,16 @@ class ContactModel {
     int a1, a2, b1, b2;
     double threshold;
   };
+  // The watches of one element's pairs, which lie side by side in the lists (an element
+  // against grains; the lower element of element pairs): none of them needs a look while
+  // the element's nodes have moved less than their smallest threshold (for element pairs:
+  // less than it minus the largest displacement of any node). One test per element with
+  // candidates instead of one per pair; the same pairs are looked at.
+  struct WatchGroup {
+    int a, b;            // the element's nodes
+    int first, count;    // its pairs
+    double threshold;    // the smallest of theirs (NaN if one is)
+  };
   struct BoundaryPair {
     int node, boundary;
     ContactKey key;
@@ -257,8 +267,10 @@ class ContactModel {
   std::unordered_map<const Spheropolyhedron *, std::unique_ptr<ShapeFeatures>> features_;
   std::vector<GrainPair> grain_pairs_;
   std::vector<GrainWatch> grain_watch_;
+  std::vector<WatchGroup> grain_groups_;
   std::vector<WirePair> wire_pairs_;
   std::vector<WireWatch> wire_watch_;
+  std::vector<WatchGroup> wire_groups_;
   std::vector<BoundaryPair> boundary_pairs_;
   std::unordered_map<ContactKey, ContactMemory, ContactKeyHash> carried_;
   bool lists_valid_ = false;
@@ -268,6 +280,7 @@ class ContactModel {
   // displacements since the last build
   std::vector<Vec3> built_at_;              // node positions
   std::vector<double> moved_;               // per node, distance from there (this substep)
+  double largest_moved_ = 0.0;              // the largest of them
   std::vector<Pose> grains_built_at_;
   std::vector<Pose> grains_last_step_;
   double boundary_travel_ = 0.0;            // of the fastest boundary, before this step

@@ -93,4 +93,64 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &a
 ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector<Vec3> &positions,
                                  std::vector<Vec3> &forces);
 
+// add_elastic_forces (each element's law and each joint's k_rot) for one topology, prepared
+// once and then evaluated every substep: every force and energy equal to add_elastic_forces'
+// to the last bit (each law's operations in the same order, each node's forces summed in the
+// same order), in under half its time on the wire's chains. A run of elements (i, i+1),
+// (i+1, i+2), ... listed one after the other, and of joints (i, i+1, i+2), ... likewise, is
+// evaluated two at a time on contiguous arrays (Eigen Array2d), each element's direction
+// and length once for its law and both its joints; the rest one by one with
+// add_elastic_forces' laws. All results go to arrays first and are then summed per node in
+// add_elastic_forces' order. Details: doc/wire_model.md section 2b.
+class ElasticKernel {
+ public:
+  // Throws std::invalid_argument for a rest length <= 0 or a negative node index.
+  void prepare(const WireTopology &topology);
+  bool prepared_for(const WireTopology &topology) const;
+  // Adds the forces at `positions` to `forces` (not cleared; both indexed like the
+  // topology's nodes) and returns the energy if with_energy, else zero.
+  ElasticEnergy add_forces(const std::vector<Vec3> &positions, std::vector<Vec3> &forces, bool with_energy);
+
+ private:
+  struct Run {
+    int first, count;    // elements or joints first .. first + count - 1
+    int first_node;      // node a of the first one
+    int first_element;   // joints: the element (a, b) of the first one
+  };
+  // Nodes whose forces all come from the same five places as their neighbours' one further:
+  // elements (v - 1, v) and (v, v + 1), joints at v - 1, v and v + 1.
+  struct NodeRun {
+    int first_node, count, element, joint;    // element (v - 1, v) and joint at v - 1 of the first
+  };
+  enum Part : int { on_a_of_element, on_b_of_element, on_a_of_joint, on_b_of_joint, on_c_of_joint };
+  struct Share {    // one term of a node's force
+    Part part;
+    int index;      // element or joint
+  };
+
+  WireTopology topology_;
+  std::vector<Run> element_runs_, joint_runs_;
+  std::vector<int> single_elements_, single_joints_;    // the others, in the topology's order
+  std::vector<NodeRun> node_runs_;
+  std::vector<int> single_nodes_;                       // the others
+  std::vector<int> first_share_;                        // of each single node, into shares_
+  std::vector<Share> shares_;
+  int nodes_ = 0;
+  // per element: rest length, k_elo, 1 if it resists compression (contiguous for the runs)
+  std::vector<double> rest_, k_elo_, resists_, k_rot_;
+  // scratch: node positions by coordinate; per element its unit direction, 1 / length and
+  // force on b; per joint the forces on a and c; energies
+  std::array<std::vector<double>, 3> position_, direction_, on_b_, on_a_, on_c_;
+  std::vector<double> inverse_length_, element_energy_, joint_energy_;
+
+  struct Columns;    // the arrays' pointers for the loops (elastic_forces.cpp)
+  Columns columns(bool with_energy);
+  void elements_in_runs(bool with_energy);
+  void joints_in_runs(bool with_energy);
+  void single_element(int e, const std::vector<Vec3> &positions, bool with_energy);
+  void single_joint(int j, const std::vector<Vec3> &positions, bool with_energy);
+  void sum_per_node(std::vector<Vec3> &forces) const;
+  Vec3 share(const Share &s) const;
+};
+
 }    // namespace nscd::wire

@@ -16,6 +16,7 @@
 
 #include "math/types.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace nscd::wire {
@@ -64,9 +65,11 @@ struct SoftContactForce {
 // One time step of the contact: rotates history into the plane normal to `normal`,
 // increments it by v_t * dt, evaluates the law and updates history in place.
 // A contact with overlap <= 0 is open: zero force and the history is cleared.
-SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3 &normal,
-                                    double overlap, const Vec3 &relative_velocity, double dt,
-                                    TangentialHistory &history);
+// (Inline, below: the wire's substeps call it for every closed contact, and inlined the
+// parts of the result a caller does not use cost nothing.)
+inline SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3 &normal,
+                                           double overlap, const Vec3 &relative_velocity, double dt,
+                                           TangentialHistory &history);
 
 // Lever rule: a force at the point a + s (b - a) of element (a,b) goes (1-s) to a and s to b.
 // This is the paper's "weights inversely proportional to the distance" for a point on the
@@ -75,6 +78,91 @@ struct LeverWeights {
   double on_a, on_b;
 };
 // Throws std::invalid_argument if s is outside [0, 1] (beyond round-off).
-LeverWeights lever_weights(double s);
+inline LeverWeights lever_weights(double s);
+
+/* ---------------------------------------------------------------------- definitions */
+
+[[noreturn]] void throw_lever_outside(double s);
+
+namespace soft_contact_detail {
+
+inline Vec3 load(const TangentialHistory &h) { return Vec3(h.xi[0], h.xi[1], h.xi[2]); }
+
+inline void store(const Vec3 &xi, TangentialHistory &h)
+{
+  h.xi[0] = xi.x();
+  h.xi[1] = xi.y();
+  h.xi[2] = xi.z();
+}
+
+// The contact frame turns between steps; the stored spring turns with it. Rotating (keep
+// the length, drop the normal part) rather than projecting keeps the stored elastic
+// energy, so a rolling-over contact does not leak friction force.
+inline Vec3 rotate_into_tangent_plane(const Vec3 &xi, const Vec3 &normal)
+{
+  const double length = xi.norm();
+  if (length == 0.0) return xi;
+  const Vec3 in_plane = xi - xi.dot(normal) * normal;
+  const double in_plane_length = in_plane.norm();
+  if (in_plane_length == 0.0) return Vec3::Zero();    // turned by 90 degrees: no memory left
+  return in_plane * (length / in_plane_length);
+}
+
+}    // namespace soft_contact_detail
+
+inline SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3 &normal,
+                                           double overlap, const Vec3 &relative_velocity, double dt,
+                                           TangentialHistory &history)
+{
+  using namespace soft_contact_detail;
+  SoftContactForce out;
+  if (overlap <= 0.0) {
+    history = TangentialHistory{};
+    return out;
+  }
+  const double normal_speed = relative_velocity.dot(normal);    // < 0 while approaching
+  out.normal_force = std::max(0.0, law.k_n * overlap - law.gamma_n * normal_speed);
+  out.elastic_energy = 0.5 * law.k_n * overlap * overlap;
+  out.force = out.normal_force * normal;
+  if (law.mu_s == 0.0) {    // frictionless: no tangential work, no memory
+    history = TangentialHistory{};
+    return out;
+  }
+
+  const Vec3 tangential_velocity = relative_velocity - normal_speed * normal;
+  Vec3 xi = rotate_into_tangent_plane(load(history), normal) + tangential_velocity * dt;
+  const Vec3 trial = -(law.k_t * xi + law.gamma_t * tangential_velocity);
+  const double trial_magnitude = trial.norm();
+  const bool was_sliding = history.sliding != 0.0;
+  const double mu = was_sliding && law.slip_reset == SlipReset::ToDynamicLength ? law.mu_d : law.mu_s;
+
+  if (trial_magnitude > mu * out.normal_force) {
+    out.slipped = true;
+    const Vec3 direction = trial / trial_magnitude;
+    out.tangential_force = law.mu_d * out.normal_force * direction;
+    if (law.slip_reset == SlipReset::ToDynamicLength && law.k_t > 0.0) {
+      xi = -(law.mu_d * out.normal_force / law.k_t) * direction;
+      history.sliding = 1.0;
+    } else {
+      xi.setZero();
+      history.sliding = 0.0;
+    }
+  } else {
+    out.tangential_force = trial;
+    history.sliding = 0.0;
+  }
+  store(xi, history);
+  out.force += out.tangential_force;
+  out.elastic_energy += 0.5 * law.k_t * xi.squaredNorm();
+  return out;
+}
+
+inline LeverWeights lever_weights(double s)
+{
+  constexpr double kRoundOff = 1e-12;
+  if (!(s >= -kRoundOff && s <= 1.0 + kRoundOff)) throw_lever_outside(s);
+  const double t = std::clamp(s, 0.0, 1.0);
+  return {1.0 - t, t};
+}
 
 }    // namespace nscd::wire

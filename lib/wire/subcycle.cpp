@@ -96,27 +96,160 @@ void prepare_wire_nodes(WireNodeSet &nodes, double dt)
   nodes.forces.resize(slots);
 }
 
+void load_states(WireNodeSet &nodes)
+{
+  Gear5Arrays &a = nodes.arrays;
+  const std::size_t n = nodes.state.size();
+  for (std::vector<double> &r : a.r) r.resize(3 * n);
+  a.mass.resize(3 * n);
+  a.fixed.clear();
+  a.fixed_position.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int k = 0; k < 6; ++k)
+      for (int d = 0; d < 3; ++d) a.r[k][3 * i + d] = nodes.state[i].r[k][d];
+    for (int d = 0; d < 3; ++d) a.mass[3 * i + d] = nodes.mass[i];
+    if (!nodes.fixed[i]) continue;
+    // A fixed node is not integrated: with its derivatives zero the predictor leaves it
+    // where it is, and the corrector's move is undone (correct_wire_nodes).
+    a.fixed.push_back(static_cast<int>(i));
+    for (int d = 0; d < 3; ++d) a.fixed_position.push_back(nodes.state[i].r[0][d]);
+    for (int k = 1; k < 6; ++k)
+      for (int d = 0; d < 3; ++d) a.r[k][3 * i + d] = 0.0;
+  }
+}
+
+void store_states(WireNodeSet &nodes)
+{
+  const Gear5Arrays &a = nodes.arrays;
+  for (std::size_t i = 0; i < nodes.state.size(); ++i)
+    for (int k = 0; k < 6; ++k)
+      for (int d = 0; d < 3; ++d) nodes.state[i].r[k][d] = a.r[k][3 * i + d];
+}
+
+namespace {
+
+// Two numbers at a time (one SSE2 register; Eigen picks the instructions of the machine).
+using Pair = Eigen::Array2d;
+template <class T> __attribute__((always_inline)) inline T load(const double *p) { return Eigen::Map<const T>(p); }
+template <class T> __attribute__((always_inline)) inline void store(const T &v, double *p)
+{
+  Eigen::Map<T> to(p);
+  to = v;
+}
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "a vector of Vec3 is read as 3 N numbers in a row");
+double *flat(std::vector<Vec3> &v) { return v.empty() ? nullptr : v[0].data(); }
+
+// The flat arrays as plain pointers that the compiler may keep in registers (they do not
+// alias each other nor anything the loops write).
+struct Derivatives {
+  double *__restrict r[6];
+  explicit Derivatives(std::array<std::vector<double>, 6> &a)
+  {
+    for (int k = 0; k < 6; ++k) r[k] = a[k].data();
+  }
+};
+
+// gear5_predict's Taylor shift of one number's six scaled derivatives (the same
+// operations in the same order: each line reads only higher, not yet shifted ones).
+template <class T> __attribute__((always_inline)) inline void shift(T &r0, T &r1, T &r2, T &r3, T &r4, const T &r5)
+{
+  r0 = r0 + (r1 + r2 + r3 + r4 + r5);
+  r1 = r1 + (2.0 * r2 + 3.0 * r3 + 4.0 * r4 + 5.0 * r5);
+  r2 = r2 + (3.0 * r3 + 6.0 * r4 + 10.0 * r5);
+  r3 = r3 + (4.0 * r4 + 10.0 * r5);
+  r4 = r4 + 5.0 * r5;
+}
+
+// Numbers j .. j + T::size() - 1 of the flat arrays (T: Pair, or one number as a 1 x 1
+// array for the last): gear5_correct with a = force / mass if `correct`, then
+// gear5_predict with the predicted position and velocity if `predict`.
+template <class T, bool correct, bool predict>
+__attribute__((always_inline)) inline void step_numbers(const Derivatives &d, const double *__restrict f,
+                                                        const double *__restrict mass, double scale, const double *c,
+                                                        double *__restrict x, double *__restrict v, double dt,
+                                                        std::size_t j)
+{
+  T r0 = load<T>(d.r[0] + j), r1 = load<T>(d.r[1] + j), r2 = load<T>(d.r[2] + j), r3 = load<T>(d.r[3] + j),
+    r4 = load<T>(d.r[4] + j), r5 = load<T>(d.r[5] + j);
+  if (correct) {
+    const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - r2;
+    r0 = r0 + c[0] * mismatch;
+    r1 = r1 + c[1] * mismatch;
+    r2 = r2 + c[2] * mismatch;
+    r3 = r3 + c[3] * mismatch;
+    r4 = r4 + c[4] * mismatch;
+    r5 = r5 + c[5] * mismatch;
+    store<T>(r5, d.r[5] + j);
+  }
+  if (predict) {
+    shift<T>(r0, r1, r2, r3, r4, r5);
+    store<T>(r0, x + j);
+    store<T>(r1 / dt, v + j);    // Gear5State::velocity
+  }
+  store<T>(r0, d.r[0] + j);
+  store<T>(r1, d.r[1] + j);
+  store<T>(r2, d.r[2] + j);
+  store<T>(r3, d.r[3] + j);
+  store<T>(r4, d.r[4] + j);
+}
+
+// step_numbers along all the flat arrays.
+template <bool correct, bool predict> void step_all(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
+{
+  Gear5Arrays &a = nodes.arrays;
+  const Derivatives d(a.r);
+  const std::size_t size = a.r[0].size();
+  const double *f = nodes.forces.empty() ? nullptr : nodes.forces[0].data();
+  double *x = flat(nodes.positions), *v = flat(nodes.velocities);
+  const double scale = 0.5 * nodes.dt * nodes.dt, dt = nodes.dt;
+  const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
+  std::size_t j = 0;
+  for (; j + 2 <= size; j += 2) step_numbers<Pair, correct, predict>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+  for (; j < size; ++j)
+    step_numbers<Eigen::Array<double, 1, 1>, correct, predict>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+}
+
+// The fixed nodes back at rest where they were (after a correction; r_1 .. r_5 zero).
+void hold_fixed_nodes(Gear5Arrays &a)
+{
+  for (std::size_t n = 0; n < a.fixed.size(); ++n) {
+    const std::size_t i = static_cast<std::size_t>(a.fixed[n]);
+    for (int k = 0; k < 3; ++k) {
+      a.r[0][3 * i + k] = a.fixed_position[3 * n + k];
+      for (int m = 1; m < 6; ++m) a.r[m][3 * i + k] = 0.0;
+    }
+  }
+}
+
+}    // namespace
+
+// gear5_predict and the positions and velocities of the nodes, number by number along the
+// flat arrays: the same operations on each number in the same order, so the same result
+// to the last bit. All forces zeroed.
 void predict_wire_nodes(WireNodeSet &nodes)
 {
-  const int n = nodes.size();
-  for (int i = 0; i < n; ++i) {
-    if (!nodes.fixed[i]) gear5_predict(nodes.state[i]);
-    nodes.positions[i] = nodes.state[i].position();
-    nodes.velocities[i] = nodes.fixed[i] ? Vec3::Zero() : nodes.state[i].velocity(nodes.dt);
-  }
+  step_all<false, true>(nodes, {});
   for (Vec3 &f : nodes.forces) f.setZero();
 }
 
+// gear5_correct with a = force / mass along the flat arrays (the same operations in the
+// same order), then the fixed nodes put back at rest where they were.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
 {
-  const int n = nodes.size();
-  for (int i = 0; i < n; ++i) {
-    if (nodes.fixed[i]) {
-      for (int k = 1; k < 6; ++k) nodes.state[i].r[k].setZero();
-      continue;
-    }
-    gear5_correct(nodes.state[i], nodes.forces[i] / nodes.mass[i], nodes.dt, coefficients);
+  step_all<true, false>(nodes, coefficients);
+  hold_fixed_nodes(nodes.arrays);
+}
+
+void correct_and_predict_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
+{
+  if (!nodes.arrays.fixed.empty()) {    // (they are put back between the two)
+    correct_wire_nodes(nodes, coefficients);
+    predict_wire_nodes(nodes);
+    return;
   }
+  step_all<true, true>(nodes, coefficients);
+  for (Vec3 &f : nodes.forces) f.setZero();
 }
 
 }    // namespace nscd::wire

@@ -15,7 +15,8 @@ double seconds()
 ElasticEnergy WireStep::elastic_forces_now()
 {
   std::fill(nodes.forces.begin(), nodes.forces.end(), Vec3::Zero());
-  return add_elastic_forces(topology, nodes.positions, nodes.forces);
+  if (!elastic_.prepared_for(topology)) elastic_.prepare(topology);
+  return elastic_.add_forces(nodes.positions, nodes.forces, true);
 }
 
 StepTotals WireStep::run(const SubcyclePlan &plan, const std::array<double, 6> &corrector, Exchange &exchange,
@@ -24,18 +25,24 @@ StepTotals WireStep::run(const SubcyclePlan &plan, const std::array<double, 6> &
   StepTotals totals;
   double in_forces = 0.0;
   const double start = seconds();
+  if (!elastic_.prepared_for(topology)) elastic_.prepare(topology);
+  const Eigen::Index owned = 3 * static_cast<Eigen::Index>(nodes.size());
+  using Flat = Eigen::Map<Eigen::ArrayXd>;
+  using ConstFlat = Eigen::Map<const Eigen::ArrayXd>;
   run_subcycle(plan, corrector, nodes, reactions,
                [&](const SubstepInfo &info, const std::vector<Vec3> &x, const std::vector<Vec3> &v,
                    std::vector<Vec3> &f, GrainForceAccumulator &) {
                  const double t0 = seconds();
                  exchange.share_copies(nodes);
                  const double t1 = seconds();
-                 totals.elastic = add_elastic_forces(topology, x, f);
+                 // (the energies are those of the last substep)
+                 totals.elastic = elastic_.add_forces(x, f, info.index + 1 == plan.substeps);
                  const double t2 = seconds();
                  if (contacts) totals.contacts = contacts->add_forces(x, v, info.time, info.dt, f, reactions);
                  const double t3 = seconds();
                  exchange.return_copy_forces(nodes);
-                 for (int k = 0; k < nodes.size(); ++k) f[k] += external[k] - damping * v[k];
+                 if (owned > 0)    // f += external - damping v, as numbers in a row
+                   Flat(f[0].data(), owned) += ConstFlat(external[0].data(), owned) - damping * ConstFlat(v[0].data(), owned);
                  const double t4 = seconds();
                  timing.exchange += (t1 - t0) + (t4 - t3);
                  timing.elastic += t2 - t1;

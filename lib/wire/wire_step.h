@@ -61,6 +61,9 @@ class WireStep {
   // Largest distance an integrated, free node moved from `start` (its position before the
   // step, per integrated node).
   double largest_displacement(const std::vector<Vec3> &start) const;
+
+ private:
+  ElasticKernel elastic_;    // the topology's elastic forces, prepared when it changes
 };
 
 }    // namespace nscd::wire

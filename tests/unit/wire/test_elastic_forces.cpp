@@ -215,3 +215,125 @@ TEST(ElasticForces, MomentumAndAngularMomentumConservedOnRandomWires)
     EXPECT_LT(torque.norm(), 1e-12 * scale);
   }
 }
+
+namespace {
+
+// A random wire of several chains in a shuffled, partly reversed and partly regular layout,
+// with every kind of element and joint add_elastic_forces handles: springs and strings
+// (slack and taut), k_rot 0, bends above pi/8 and below 1e-6, an element closing a ring,
+// elements to copies of nodes, a doubled element.
+WireTopology mixed_topology(std::mt19937 &rng, int chains, std::vector<Vec3> &x)
+{
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  WireTopology t;
+  x.clear();
+  for (int k = 0; k < chains; ++k) {
+    const int first = static_cast<int>(x.size());
+    const int n = 2 + static_cast<int>(u(rng) * 14);    // 2 .. 15 nodes: every tail of four
+    Vec3 p = random_vector(rng, 3.0), dir = random_vector(rng).normalized();
+    for (int i = 0; i < n; ++i) {
+      x.push_back(p);
+      const double r = u(rng);
+      if (r < 0.15) dir = (dir + random_vector(rng, 1.5)).normalized();                 // sharp bend
+      else if (r < 0.3) dir = dir;                                                      // straight on
+      else dir = (dir + random_vector(rng, 0.05)).normalized();
+      p += (0.05 + 0.02 * u(rng)) * dir;
+      if (r >= 0.15 && r < 0.3 && u(rng) < 0.5) p += 1e-9 * random_vector(rng);       // bend below 1e-6
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+      const double r = u(rng);
+      AxialLaw law{20.0 + 10.0 * u(rng), r > 0.2};    // a string now and then
+      const double rest = (r < 0.1 ? 1.2 : 0.9) * (x[first + i + 1] - x[first + i]).norm();    // slack or taut
+      if (u(rng) < 0.1) t.elements.push_back({first + i + 1, first + i, rest, law});        // reversed
+      else t.elements.push_back({first + i, first + i + 1, rest, law});
+    }
+    for (int i = 1; i + 1 < n; ++i) {
+      const double k_rot = u(rng) < 0.1 ? 0.0 : 0.01 + 0.01 * u(rng);
+      if (u(rng) < 0.1) t.joints.push_back({first + i + 1, first + i, first + i - 1, k_rot});    // reversed
+      else t.joints.push_back({first + i - 1, first + i, first + i + 1, k_rot});
+    }
+    if (n > 3 && u(rng) < 0.3) {    // a ring
+      t.elements.push_back({first + n - 1, first, 0.06, AxialLaw{30.0, true}});
+      t.joints.push_back({first + n - 2, first + n - 1, first, 0.01});
+    }
+  }
+  const int owned = static_cast<int>(x.size());
+  for (int copy = 0; copy < 3; ++copy) {    // copies of nodes (ghost atoms): an element to each
+    const int of = static_cast<int>(u(rng) * owned);
+    x.push_back(x[of] + Vec3(0.05, 0.0, 0.0));
+    t.elements.push_back({of, owned + copy, 0.05, AxialLaw{25.0, true}});
+  }
+  t.elements.push_back(t.elements[static_cast<std::size_t>(u(rng) * t.elements.size())]);    // doubled
+  // Mostly in order (as fix wire lists them), with a few swaps.
+  std::stable_sort(t.elements.begin(), t.elements.end(), [](const auto &p, const auto &q) { return p.a < q.a; });
+  std::stable_sort(t.joints.begin(), t.joints.end(), [](const auto &p, const auto &q) { return p.b < q.b; });
+  for (int s = 0; s < 2; ++s) {
+    std::swap(t.elements[static_cast<std::size_t>(u(rng) * t.elements.size())], t.elements.back());
+    if (!t.joints.empty()) std::swap(t.joints[static_cast<std::size_t>(u(rng) * t.joints.size())], t.joints.front());
+  }
+  return t;
+}
+
+}    // namespace
+
+TEST(ElasticKernel, EqualsAddElasticForcesToTheLastBit)
+{
+  // The prepared kernel must give add_elastic_forces' forces and energies exactly (same
+  // operations, same order of summation per node), on plain chains and on every irregular
+  // case, added to forces already there; its energy only when asked.
+  std::mt19937 rng(77);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<Vec3> x;
+    const WireTopology t = trial % 4 == 0 ? open_chain_topology(3 + trial % 37, 0.05) : mixed_topology(rng, 1 + trial % 5, x);
+    if (trial % 4 == 0) {
+      x.resize(3 + trial % 37);
+      for (std::size_t i = 0; i < x.size(); ++i) x[i] = Vec3(0.049 * i, 0.01 * std::sin(0.7 * i), 0.003 * i * i);
+    }
+    std::vector<Vec3> expected(x.size()), got(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) expected[i] = got[i] = random_vector(rng, 1e-3);
+    std::vector<Vec3> got_without_energy = got;
+    const ElasticEnergy e = add_elastic_forces(t, x, expected);
+    ElasticKernel kernel;
+    kernel.prepare(t);
+    ASSERT_TRUE(kernel.prepared_for(t));
+    const ElasticEnergy k = kernel.add_forces(x, got, true);
+    const ElasticEnergy none = kernel.add_forces(x, got_without_energy, false);
+    EXPECT_EQ(k.axial, e.axial) << "trial " << trial;
+    EXPECT_EQ(k.bending, e.bending) << "trial " << trial;
+    EXPECT_EQ(none.total(), 0.0);
+    for (std::size_t i = 0; i < x.size(); ++i)
+      for (int d = 0; d < 3; ++d) {
+        ASSERT_EQ(got[i][d], expected[i][d]) << "trial " << trial << " node " << i << " coordinate " << d;
+        ASSERT_EQ(got_without_energy[i][d], expected[i][d]) << "trial " << trial << " node " << i;
+      }
+  }
+}
+
+TEST(ElasticKernel, PreparedForItsTopologyOnlyAndRefusesWhatAddElasticForcesRefuses)
+{
+  WireTopology t = open_chain_topology(6, 0.1);
+  ElasticKernel kernel;
+  kernel.prepare(t);
+  EXPECT_TRUE(kernel.prepared_for(t));
+  WireTopology other = t;
+  other.joints[2].k_rot = 1.0;
+  EXPECT_FALSE(kernel.prepared_for(other));
+  other = t;
+  other.elements[1].law.resists_compression = false;
+  EXPECT_FALSE(kernel.prepared_for(other));
+  other = t;
+  other.elements.pop_back();
+  EXPECT_FALSE(kernel.prepared_for(other));
+
+  std::vector<Vec3> x(6), f(6, Vec3::Zero());
+  for (int i = 0; i < 6; ++i) x[i] = Vec3(0.1 * i, 0, 0);
+  x[3] = x[2];    // a zero-length element
+  EXPECT_THROW(kernel.add_forces(x, f, true), std::invalid_argument);
+  EXPECT_THROW(add_elastic_forces(t, x, f), std::invalid_argument);
+  x[3] = Vec3(0.3, 0, 0);
+  std::vector<Vec3> too_few(5, Vec3::Zero());
+  EXPECT_THROW(kernel.add_forces(x, too_few, true), std::invalid_argument);
+  other = t;
+  other.elements[0].rest_length = 0.0;
+  EXPECT_THROW(kernel.prepare(other), std::invalid_argument);
+}

@@ -1,13 +1,19 @@
 // Gear-5 predictor-corrector on the harmonic and damped oscillators: global order,
 // long-run energy behaviour, and the stability limits (measured by bisection on runs).
+#include "wire/elastic_forces.h"
 #include "wire/gear5.h"
 #include "wire/stability.h"
+#include "wire/subcycle.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <limits>
+#include <vector>
 
 using namespace nscd;
 using namespace nscd::wire;
@@ -288,4 +294,81 @@ TEST(Gear5, PackUnpackRoundTrips)
   Gear5State t;
   t.unpack(buffer);
   for (int k = 0; k < 6; ++k) EXPECT_EQ(s.r[k], t.r[k]);
+}
+
+namespace {
+
+// The subcycle's integration as it was before the states went to flat arrays: each node's
+// Gear5State predicted and corrected by gear5_predict / gear5_correct (fixed nodes held).
+void reference_subcycle(std::vector<Gear5State> &state, const std::vector<double> &mass,
+                        const std::vector<std::uint8_t> &fixed, double dt, int substeps,
+                        const std::array<double, 6> &c,
+                        const std::function<void(const std::vector<Vec3> &, const std::vector<Vec3> &, std::vector<Vec3> &)> &forces)
+{
+  const std::size_t n = state.size();
+  std::vector<Vec3> x(n), v(n), f(n);
+  for (int k = 0; k < substeps; ++k) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!fixed[i]) gear5_predict(state[i]);
+      x[i] = state[i].position();
+      v[i] = fixed[i] ? Vec3::Zero() : state[i].velocity(dt);
+      f[i].setZero();
+    }
+    forces(x, v, f);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (fixed[i]) {
+        for (int m = 1; m < 6; ++m) state[i].r[m].setZero();
+        continue;
+      }
+      gear5_correct(state[i], f[i] / mass[i], dt, c);
+    }
+  }
+}
+
+}    // namespace
+
+TEST(Gear5, SubcycleOnFlatArraysStepsLikeGear5StatesToTheLastBit)
+{
+  // run_subcycle keeps the states in flat arrays and fuses the corrector of one substep
+  // with the predictor of the next; every number must come out as gear5_predict and
+  // gear5_correct give it node by node: with and without fixed nodes (the fused pass
+  // runs only without), across a change of substep, for an odd number of coordinates.
+  const int n = 37;
+  const double l = 0.01, m0 = 1e-4;
+  const WireTopology chain = open_chain_topology(n, l);
+  const auto c = gear5_corrector_coefficients(GearCorrector::ThreeSixteenths);
+  const auto forces = [&](const std::vector<Vec3> &x, const std::vector<Vec3> &v, std::vector<Vec3> &f) {
+    add_elastic_forces(chain, AxialLaw{10.0, true}, 1e-4, x, f);
+    for (std::size_t i = 0; i < x.size(); ++i) f[i] += Vec3(0, 0, -9.81e-4) - 0.3 * v[i];
+  };
+  for (int with_fixed = 0; with_fixed < 2; ++with_fixed) {
+    std::vector<Vec3> x0(n);
+    for (int i = 0; i < n; ++i) x0[i] = Vec3(i * l, 0.002 * std::sin(0.7 * i), 0.001 * std::cos(1.3 * i));
+    WireNodeSet nodes;
+    nodes.reset(x0, m0, 1e-5);
+    for (int i = 0; i < n; ++i) {
+      nodes.mass[i] = m0 * (1.0 + 0.01 * i);
+      nodes.state[i] = gear5_start(x0[i], Vec3(0.01 * i, -0.02, 0.03), Vec3(0, 0, -9.81), 1e-5);
+    }
+    if (with_fixed) nodes.fixed[0] = nodes.fixed[17] = 1;
+    std::vector<Gear5State> expected = nodes.state;
+    GrainForceAccumulator none;
+    none.reset(0);
+    for (const double dt : {1e-5, 1e-5, 7e-6}) {
+      run_subcycle(SubcyclePlan{13, dt}, c, nodes, none,
+                   [&](const SubstepInfo &, const std::vector<Vec3> &x, const std::vector<Vec3> &v, std::vector<Vec3> &f,
+                       GrainForceAccumulator &) { forces(x, v, f); });
+      const double from = dt == 7e-6 ? 1e-5 : dt;
+      if (from != dt)
+        for (Gear5State &s : expected) gear5_change_step(s, from, dt);
+      reference_subcycle(expected, nodes.mass, nodes.fixed, dt, 13, c, forces);
+    }
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 6; ++k)
+        for (int d = 0; d < 3; ++d)
+          ASSERT_EQ(nodes.state[i].r[k][d], expected[i].r[k][d]) << "fixed nodes " << with_fixed << ", node " << i << " r_" << k;
+    if (with_fixed) {
+      EXPECT_EQ(nodes.state[17].position(), x0[17]);    // held where it was
+    }
+  }
 }
