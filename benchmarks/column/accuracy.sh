@@ -55,7 +55,7 @@ run_one() {    # setting seed
 for setting in $settings; do
   for seed in $seeds; do
     while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do sleep 5; done
-    [ -f "$setting.$seed.time" ] && continue    # done before: kept
+    grep -q "s user" "$setting.$seed.time" 2>/dev/null && continue    # done before: kept
     run_one "$setting" "$seed" &
   done
 done
