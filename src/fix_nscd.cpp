@@ -14,7 +14,7 @@
 #include "modify.h"
 #include "nscd_arrays.h"
 #include "nscd_gather.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
@@ -43,11 +43,6 @@ enum Diagnostic {
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
 
-// Restart files hold ImpulseRecords as raw bytes: their layout is the file format. Version 1:
-// the record count, then the records; version 2: the count, the timestep the impulses were
-// solved with (0: unknown), then the records.
-constexpr int kRestartVersion = 2;
-
 // Cell size of the coarse correction (nscd::SolverOptions::coarse_cell) in grain sizes:
 // "no" = off, "yes" = 2 (the size measured best, doc/nscd_solver.md), or a number > 0.
 double coarse_cell_of(const std::string &value, LAMMPS *lmp)
@@ -61,7 +56,6 @@ double coarse_cell_of(const std::string &value, LAMMPS *lmp)
                     "sizes)", value);
   return cell;
 }
-static_assert(sizeof(nscd::ImpulseRecord) == 48, "restart record layout changed");
 }    // namespace
 
 struct FixNSCD::Solver {
@@ -811,7 +805,7 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 }
 
 /* Restart: the last solved impulses of all contacts, so that a continued run warm-starts
-   exactly as the uninterrupted one. */
+   exactly as the uninterrupted one (format: nscd_restart_blocks.h). */
 void FixNSCD::write_restart(FILE *fp)
 {
   std::vector<nscd::ImpulseRecord> mine;
@@ -820,37 +814,31 @@ void FixNSCD::write_restart(FILE *fp)
   } else {
     for (const nscd::Contact &c : solver->problem.contacts) mine.push_back(nscd::record_of(c));
   }
-  const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
-  if (comm->me == 0) {
-    const int count = (int) all.size();
-    nscd_restart::write_header(fp, kRestartVersion,
-                               (int) (sizeof(int) + sizeof(double) + count * sizeof(nscd::ImpulseRecord)));
-    fwrite(&count, sizeof(int), 1, fp);
-    fwrite(&warm_start_dt, sizeof(double), 1, fp);
-    fwrite(all.data(), sizeof(nscd::ImpulseRecord), all.size(), fp);
-  }
+  nscd_restart::SolverBlock block;
+  block.records = gather_records(mine, world, false);
+  block.dt = warm_start_dt;
+  if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::solver_block(block));
 }
 
-void FixNSCD::restart(char *block)
+/* read_restart hands every rank the block written above (without its size). */
+void FixNSCD::restart(char *bytes)
 {
-  // read_restart hands every rank the block written above, after its size.
-  const char *buf = block;
-  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
-  if (version > kRestartVersion)
-    error->all(FLERR, "fix nscd {}: the restart file holds its contacts in format {}, this build "
-               "reads formats up to {}; use a newer build, or start without the stored warm "
-               "start ('unfix {}' before the run, then define it again)", id, version,
-               kRestartVersion, id);
-  int count;
-  std::memcpy(&count, buf, sizeof(int));
-  buf += sizeof(int);
-  // The impulses' timestep, so that a run at another `timestep` starts from the same forces
-  // (gather_contacts); before version 2 it is not known and the impulses are taken as they are.
-  warm_start_dt = 0.0;
-  if (version >= 2) {
-    std::memcpy(&warm_start_dt, buf, sizeof(double));
-    buf += sizeof(double);
+  nscd_restart::SolverBlock block;
+  try {
+    block = nscd_restart::read_solver_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix nscd {}: its restart block cannot be used: {}. To start without the stored warm "
+               "start, define fix nscd with another ID", id, e.what());
   }
-  solver->restored_contacts.resize(count);
-  std::memcpy(solver->restored_contacts.data(), buf, count * sizeof(nscd::ImpulseRecord));
+  if (!block.read) {
+    if (comm->me == 0)
+      error->warning(FLERR, "fix nscd {}: the restart file holds the warm start in format {}, whose length this "
+                     "build cannot check; it is not read (the first step starts from zero impulses; write the "
+                     "restart again with this build to keep it)", id, block.format);
+    return;
+  }
+  // The impulses' timestep, so that a run at another `timestep` starts from the same forces
+  // (gather_contacts).
+  warm_start_dt = block.dt;
+  solver->restored_contacts = std::move(block.records);
 }

@@ -11,7 +11,7 @@
 #include "nscd_arrays.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 #include "update.h"
 
 #include <algorithm>
@@ -22,7 +22,6 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, NOUTPUTS };
-constexpr int kRestartVersion = 1;    // z, vz, elapsed time, z at the start
 }
 
 /* The plate as fix nscd and fix wire see it: a body of the contact problem. */
@@ -205,23 +204,25 @@ double FixNSCDPlate::compute_vector(int n)
 void FixNSCDPlate::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double state[4] = {plate->z, plate->vz, plate->elapsed, plate->z_start};
-  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
-  fwrite(state, sizeof(double), 4, fp);
+  nscd_restart::PlateBlock block;
+  block.z = plate->z;
+  block.vz = plate->vz;
+  block.elapsed = plate->elapsed;
+  block.z_start = plate->z_start;
+  nscd_restart::write_block(fp, nscd_restart::plate_block(block));
 }
 
-void FixNSCDPlate::restart(char *block)
+void FixNSCDPlate::restart(char *bytes)
 {
-  const char *buf = block;
-  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
-  if (version > kRestartVersion)
-    error->all(FLERR, "fix nscd/plate {}: the restart file holds the plate in format {}, this "
-               "build reads formats up to {}; use a newer build or another fix ID", id, version,
-               kRestartVersion);
-  double state[4];
-  std::memcpy(state, buf, sizeof(state));
-  plate->z = state[0];
-  plate->vz = state[1];
-  plate->elapsed = state[2];
-  plate->z_start = state[3];
+  nscd_restart::PlateBlock block;
+  try {
+    block = nscd_restart::read_plate_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix nscd/plate {}: its restart block cannot be used: {}. To start from the plate "
+               "given in the deck, define it with another fix ID", id, e.what());
+  }
+  plate->z = block.z;
+  plate->vz = block.vz;
+  plate->elapsed = block.elapsed;
+  plate->z_start = block.z_start;
 }

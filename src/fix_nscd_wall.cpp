@@ -7,7 +7,7 @@
 #include "nscd_arrays.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
@@ -20,8 +20,6 @@
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr int kRestartVersion = 1;    // the kind (0 plane, 1 cylinder), then the reference point
-
 nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
 {
   return nscd::Vec3(utils::numeric(FLERR, arg[0], false, lmp), utils::numeric(FLERR, arg[1], false, lmp),
@@ -234,28 +232,27 @@ double FixNSCDWall::compute_vector(int n)
 void FixNSCDWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
+  nscd_restart::WallBlock block;
+  block.cylinder = wall->kind == Wall::Kind::cylinder;
   const nscd::Vec3 &p = wall->reference_point();
-  const double state[4] = {wall->kind == Wall::Kind::plane ? 0.0 : 1.0, p.x(), p.y(), p.z()};
-  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
-  fwrite(state, sizeof(double), 4, fp);
+  block.point = {p.x(), p.y(), p.z()};
+  nscd_restart::write_block(fp, nscd_restart::wall_block(block));
 }
 
-void FixNSCDWall::restart(char *block)
+void FixNSCDWall::restart(char *bytes)
 {
-  const char *buf = block;
-  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
-  if (version > kRestartVersion)
-    error->all(FLERR, "fix nscd/wall {}: the restart file holds the wall in format {}, this "
-               "build reads formats up to {}; use a newer build or another fix ID", id, version,
-               kRestartVersion);
-  double state[4];
-  std::memcpy(state, buf, sizeof(state));
-  const Wall::Kind stored = state[0] == 0.0 ? Wall::Kind::plane : Wall::Kind::cylinder;
-  if (stored != wall->kind) {
+  nscd_restart::WallBlock block;
+  try {
+    block = nscd_restart::read_wall_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix nscd/wall {}: its restart block cannot be used: {}. To start from the position "
+               "given in the deck, define the wall with another fix ID", id, e.what());
+  }
+  if (block.cylinder != (wall->kind == Wall::Kind::cylinder)) {
     if (comm->me == 0)
       error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "
-                     "its position is not used", id, stored == Wall::Kind::plane ? "plane" : "cylinder");
+                     "its position is not used", id, block.cylinder ? "cylinder" : "plane");
     return;
   }
-  wall->reference_point() = nscd::Vec3(state[1], state[2], state[3]);
+  wall->reference_point() = nscd::Vec3(block.point[0], block.point[1], block.point[2]);
 }

@@ -5,9 +5,15 @@
 // errors. Runs serially and under mpirun -np 2.
 #include "lammps_fixture.h"
 
+#include "fix.h"
 #include "modify.h"
+#include "nscd_restart.h"
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <functional>
 #include <string>
 
 namespace {
@@ -181,4 +187,283 @@ TEST_F(BadInputTest, GrainsWhoseCoresIntersectGetAWarning)
   const std::string log = log_of({"run 0"});
   EXPECT_TRUE(has(log, "grains ID 1 and 3 overlap by 0.1 (0.115 of the smaller one's bounding radius)"))
       << log;
+}
+
+// ---------------------------------------------------------------- damaged restart files
+
+// A restart file of a scene with every style that writes restart data (pair nscd, fix nscd,
+// a wall, the plate, fix wire with contact memories, bond and angle wire, the atom style),
+// and ways to damage the blocks in it. Blocks are found as LAMMPS writes a global fix
+// block: the fix's ID and style as counted strings, LAMMPS' size field, then our mark.
+class RestartDamageTest : public BadInputTest {
+ protected:
+  std::string original;    // the restart file's bytes (on rank 0)
+
+  const std::vector<std::string> fixes = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0.1 0 -1",
+      "fix plate all nscd/plate 3 mass 1",
+      "fix w wire wire radius 0.02 k_n 200 gamma_n 2 k_t 150 gamma_t 1 mu_s 0.5 mu_d 0.4",
+      "fix solver grains nscd"};
+
+  // The wire lies over the cube (atom 1, mass 1.2345678901234567): after 60 steps the
+  // cube rests on the floor (solver contacts) and the wire on the cube (friction memories:
+  // gravity is tilted).
+  void write_scene()
+  {
+    commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+              "boundary f f f", "shapes read " + shape_file("cube.shapes", kCube),
+              "region box block -5 5 -5 5 -1 5",
+              "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 1 extra/angle/per/atom 1 "
+              "extra/special/per/atom 6",
+              "create_atoms 1 single 0 0 0.5", "shapes assign all shape 1 mass 1.2345678901234567",
+              "bond_style wire", "bond_coeff 1 100 0.1", "angle_style wire", "angle_coeff 1 0.01",
+              "create_wire 2 line -0.8 0 1.0201 0.8 0 1.0201 bond 1 angle 1 mass 0.01 radius 0.02",
+              "pair_style nscd", "pair_coeff * * 0.5", "timestep 0.001", "group grains type 1",
+              "group wire type 2"});
+    commands(fixes);
+    commands({"run 60", "write_restart " + scratch("scene.restart")});
+    if (rank() == 0) original = read_bytes(scratch("scene.restart"));
+  }
+
+  static std::string read_bytes(const std::string &path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  static std::string counted(const std::string &text)
+  {
+    const std::int32_t n = static_cast<std::int32_t>(text.size() + 1);
+    return std::string(reinterpret_cast<const char *>(&n), sizeof(n)) + text + '\0';
+  }
+  // Offset of the global block of fix `id` (just after LAMMPS' size field), or npos.
+  static size_t fix_block(const std::string &bytes, const std::string &id, const std::string &style)
+  {
+    const std::string marker = counted(id) + counted(style);
+    const std::int32_t magic = LAMMPS_NS::nscd_restart::kMagic;
+    for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
+      const size_t block = at + marker.size() + sizeof(int);
+      if (block + 4 <= bytes.size() && std::memcmp(&bytes[block], &magic, 4) == 0) return block;
+    }
+    return std::string::npos;
+  }
+  template <class T> static void put(std::string &bytes, size_t at, T value)
+  {
+    std::memcpy(&bytes[at], &value, sizeof(T));
+  }
+  template <class T> static T get(const std::string &bytes, size_t at)
+  {
+    T value;
+    std::memcpy(&value, &bytes[at], sizeof(T));
+    return value;
+  }
+
+  // The message of reading back the file damaged by `damage` (run on rank 0), then
+  // redefining every fix; "" if all went through.
+  std::string error_after(const std::function<void(std::string &)> &damage)
+  {
+    if (rank() == 0) {
+      std::string bytes = original;
+      damage(bytes);
+      std::ofstream(scratch("damaged.restart"), std::ios::binary) << bytes;
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    restart_instance();
+    std::string message = error_of("read_restart " + scratch("damaged.restart"));
+    for (size_t k = 0; k < fixes.size() && message.empty(); k++) message = error_of(fixes[k]);
+    return message;
+  }
+  std::string log_after(const std::function<void(std::string &)> &damage)
+  {
+    if (rank() == 0) {
+      std::string bytes = original;
+      damage(bytes);
+      std::ofstream(scratch("damaged.restart"), std::ios::binary) << bytes;
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    restart_instance();
+    run("read_restart " + scratch("damaged.restart"));
+    return log_of(fixes);
+  }
+};
+
+// Every global fix block: a foreign mark, a count too large, a stated size that does not
+// match the counts, a newer format, a value no run writes. Each is refused naming the fix,
+// its ID and what is wrong (before: a count too large ended in std::bad_alloc, a segfault
+// or reads far past the block; an unknown mark was read as "format 0").
+TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
+{
+  write_scene();
+  size_t solver = 0, wire = 0, wall = 0, plate = 0;
+  if (rank() == 0) {
+    solver = fix_block(original, "solver", "nscd");
+    wire = fix_block(original, "w", "wire");
+    wall = fix_block(original, "floor", "nscd/wall");
+    plate = fix_block(original, "plate", "nscd/plate");
+    ASSERT_NE(solver, std::string::npos);
+    ASSERT_NE(wire, std::string::npos);
+    ASSERT_NE(wall, std::string::npos);
+    ASSERT_NE(plate, std::string::npos);
+    EXPECT_GT(get<std::int64_t>(original, solver + 16), 0) << "contact records";
+    EXPECT_GT(get<std::int64_t>(original, wire + 24), 0) << "wire memories";
+  }
+  // header: mark (8 bytes), payload size (8); fix nscd: count (8), dt (8), records;
+  // fix wire: dt (8), count (8), records
+  struct Case {
+    const char *what;
+    std::function<void(std::string &)> damage;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Case> cases = {
+      {"fix nscd: foreign mark", [&](std::string &b) { b[solver] ^= 0x5a; },
+       {"fix nscd solver", "does not begin with this package's mark"}},
+      {"fix nscd: count too large", [&](std::string &b) { put<std::int64_t>(b, solver + 16, 1000000000); },
+       {"fix nscd solver", "counts 1000000000 contact records"}},
+      {"fix nscd: count negative", [&](std::string &b) { put<std::int64_t>(b, solver + 16, -3); },
+       {"fix nscd solver", "counts -3 contact records"}},
+      {"fix nscd: size larger", [&](std::string &b) { put<std::int64_t>(b, solver + 8, get<std::int64_t>(b, solver + 8) + 48); },
+       {"fix nscd solver", "bytes are left"}},
+      {"fix nscd: size smaller", [&](std::string &b) { put<std::int64_t>(b, solver + 8, 20); },
+       {"fix nscd solver", "only 4 bytes are left"}},
+      {"fix nscd: format 1000", [&](std::string &b) { put<std::int32_t>(b, solver + 4, 1000); },
+       {"fix nscd solver", "format 1000", "up to 3"}},
+      {"fix nscd: format -7", [&](std::string &b) { put<std::int32_t>(b, solver + 4, -7); },
+       {"fix nscd solver", "format number -7"}},
+      {"fix nscd: a NaN impulse", [&](std::string &b) { put<double>(b, solver + 32 + 24, NAN); },
+       {"fix nscd solver", "contact record 1's impulse is nan"}},
+      {"fix nscd: a record of one body", [&](std::string &b) { put<std::int64_t>(b, solver + 32 + 8, get<std::int64_t>(b, solver + 32)); },
+       {"fix nscd solver", "contact record 1 joins the bodies"}},
+      {"fix wire: foreign mark", [&](std::string &b) { b[wire + 1] ^= 0x11; },
+       {"fix wire w", "does not begin with this package's mark"}},
+      {"fix wire: count too large", [&](std::string &b) { put<std::int64_t>(b, wire + 24, 1ll << 40); },
+       {"fix wire w", "counts 1099511627776 contact memories"}},
+      {"fix wire: format 4", [&](std::string &b) { put<std::int32_t>(b, wire + 4, 4); },
+       {"fix wire w", "format 4", "up to 3"}},
+      {"fix wire: a NaN substep", [&](std::string &b) { put<double>(b, wire + 16, NAN); },
+       {"fix wire w", "substep is nan"}},
+      {"fix wire: a weight of 7", [&](std::string &b) { put<double>(b, wire + 32 + 32 + 64, 7.0); },
+       {"fix wire w", "end weight 7"}},
+      {"fix nscd/wall: foreign mark", [&](std::string &b) { put<std::int32_t>(b, wall, 12345); },
+       {"fix nscd/wall floor", "does not begin with this package's mark"}},
+      {"fix nscd/wall: format 3", [&](std::string &b) { put<std::int32_t>(b, wall + 4, 3); },
+       {"fix nscd/wall floor", "format 3", "up to 2"}},
+      {"fix nscd/wall: kind 2", [&](std::string &b) { put<double>(b, wall + 16, 2.0); },
+       {"fix nscd/wall floor", "kind is 2"}},
+      {"fix nscd/wall: size 0", [&](std::string &b) { put<std::int64_t>(b, wall + 8, 0); },
+       {"fix nscd/wall floor", "ends inside the wall's kind"}},
+      {"fix nscd/plate: format 3", [&](std::string &b) { put<std::int32_t>(b, plate + 4, 3); },
+       {"fix nscd/plate plate", "format 3", "up to 2"}},
+      {"fix nscd/plate: an infinite z", [&](std::string &b) { put<double>(b, plate + 16, INFINITY); },
+       {"fix nscd/plate plate", "the plate's z is inf"}},
+      {"fix nscd/plate: a negative loading time", [&](std::string &b) { put<double>(b, plate + 32, -1.0); },
+       {"fix nscd/plate plate", "loading time is -1"}},
+  };
+  for (const Case &c : cases) {
+    const std::string message = error_after(c.damage);
+    for (const std::string &part : c.expected) EXPECT_TRUE(has(message, part)) << c.what << ": " << message;
+  }
+  // and the undamaged file reads and runs on
+  EXPECT_EQ(error_after([](std::string &) {}), "");
+  EXPECT_EQ(error_of("run 2"), "");
+}
+
+// The previous formats: fix nscd's format 2 and fix wire's format 2 had no size (their
+// counts cannot be checked): they are not read, with a warning naming the format; the
+// wall's and the plate's format 1 (fixed size) still read.
+TEST_F(RestartDamageTest, PreviousFormatsAreReadOrSkippedByName)
+{
+  write_scene();
+  auto to_previous = [&](std::string &b) {
+    // fix nscd 3 -> 2: {mark 2, int32 count, dt, records}
+    size_t at = fix_block(b, "solver", "nscd");
+    const std::int64_t count = get<std::int64_t>(b, at + 16);
+    const double dt = get<double>(b, at + 24);
+    std::string old;
+    old.append(b, at, 4);
+    const std::int32_t two = 2, count32 = (std::int32_t) count;
+    old.append(reinterpret_cast<const char *>(&two), 4).append(reinterpret_cast<const char *>(&count32), 4);
+    old.append(reinterpret_cast<const char *>(&dt), 8).append(b, at + 32, count * 48);
+    put<int>(b, at - 4, (int) old.size());
+    b.replace(at, 32 + count * 48, old);
+    // fix wire 3 -> 2: {-2.0, dt, count as a double, records}
+    at = fix_block(b, "w", "wire");
+    const std::int64_t memories = get<std::int64_t>(b, at + 24);
+    const double header[3] = {-2.0, get<double>(b, at + 16), (double) memories};
+    old.assign(reinterpret_cast<const char *>(header), sizeof(header)).append(b, at + 32, memories * 112);
+    put<int>(b, at - 4, (int) old.size());
+    b.replace(at, 32 + memories * 112, old);
+    // walls and plate 2 -> 1: {mark 1, 4 doubles}
+    for (const auto &fix : {std::make_pair("floor", "nscd/wall"), std::make_pair("plate", "nscd/plate")}) {
+      at = fix_block(b, fix.first, fix.second);
+      put<std::int32_t>(b, at + 4, 1);
+      b.erase(at + 8, 8);
+      put<int>(b, at - 4, 40);
+    }
+  };
+  const std::string log = log_after(to_previous);
+  EXPECT_TRUE(has(log, "fix nscd solver: the restart file holds the warm start in format 2")) << log;
+  EXPECT_TRUE(has(log, "fix wire w: the restart file holds the wire in format 2")) << log;
+  EXPECT_FALSE(has(log, "ERROR")) << log;
+  EXPECT_NEAR(lmp->modify->get_fix_by_id("plate")->compute_vector(0), 3.0, 1e-9);    // read: the plate's z
+  EXPECT_EQ(error_of("run 2"), "");
+}
+
+// pair_style nscd, bond_style and angle_style wire read their part of the file themselves:
+// a foreign mark, a coefficient no command accepts, a file cut inside them.
+TEST_F(RestartDamageTest, DamagedForceFieldSettingsAreRefusedByName)
+{
+  write_scene();
+  size_t pair = 0, bond = 0, angle = 0;
+  if (rank() == 0) {
+    const std::int32_t magic = LAMMPS_NS::nscd_restart::kMagic;
+    pair = original.find(std::string(reinterpret_cast<const char *>(&magic), 4));    // written first
+    const double bond_row[3] = {100.0, 0.1, 0.0};
+    bond = original.find(std::string(reinterpret_cast<const char *>(bond_row), sizeof(bond_row)));
+    const double k_rot = 0.01;
+    angle = original.find(std::string(reinterpret_cast<const char *>(&k_rot), 8), bond + 24);
+    ASSERT_NE(pair, std::string::npos);
+    ASSERT_NE(bond, std::string::npos);
+    ASSERT_NE(angle, std::string::npos);
+  }
+  // pair: mark (8), 4 doubles (32), then per type pair (1 1), (1 2), (2 2): flag, mu, e
+  std::string message = error_after([&](std::string &b) { b[pair + 2] = 'X'; });
+  EXPECT_TRUE(has(message, "pair_style nscd: the restart file's settings cannot be used")) << message;
+  EXPECT_TRUE(has(message, "mark")) << message;
+  message = error_after([&](std::string &b) { put<std::int32_t>(b, pair + 4, 2); });
+  EXPECT_TRUE(has(message, "settings are in format 2, this build reads formats up to 1")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, pair + 8 + 8, 3.0); });
+  EXPECT_TRUE(has(message, "activation fraction 3")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, pair + 40 + 4, -0.5); });
+  EXPECT_TRUE(has(message, "type pair 1 1: a friction coefficient is -0.5")) << message;
+  message = error_after([&](std::string &b) { put<std::int32_t>(b, pair + 40 + 20, 9); });
+  EXPECT_TRUE(has(message, "type pair 1 2: a type pair's flag is 9")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, bond, NAN); });
+  EXPECT_TRUE(has(message, "coefficients of bond type 1 are damaged (k_elo = nan")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, angle, -1.0); });
+  EXPECT_TRUE(has(message, "k_rot = -1 of angle type 1 is damaged")) << message;
+}
+
+// Per-atom values: the grain's mass and fix wire's per-atom Gear state. read_restart stops on
+// the rank owning the atom (error->one), so this runs on one rank only.
+TEST_F(RestartDamageTest, DamagedPerAtomValuesAreRefusedNamingTheAtom)
+{
+  if (ranks() > 1) GTEST_SKIP() << "error->one on the owning rank: serial check";
+  write_scene();
+  const int i = lmp->atom->map(2);    // a wire node: its Gear state begins with its position
+  const double start[4] = {20.0, lmp->atom->x[i][0], lmp->atom->x[i][1], lmp->atom->x[i][2]};
+  const double mass = 1.2345678901234567;
+  const size_t at_mass = original.find(std::string(reinterpret_cast<const char *>(&mass), 8));
+  ASSERT_NE(at_mass, std::string::npos);
+  std::string message = error_after([&](std::string &b) { put<double>(b, at_mass, -2.0); });
+  EXPECT_TRUE(has(message, "read_restart: atom ID 1: mass -2 must be a finite number > 0")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, at_mass, NAN); });
+  EXPECT_TRUE(has(message, "atom ID 1: mass nan")) << message;
+
+  // fix wire's values of node ID 2: its count (20), then its Gear state
+  const size_t gear = original.find(std::string(reinterpret_cast<const char *>(start), sizeof(start)));
+  ASSERT_NE(gear, std::string::npos);
+  message = error_after([&](std::string &b) { put<double>(b, gear, 1e9); });
+  EXPECT_TRUE(has(message, "fix wire w: the restart file's per-atom values of atom ID 2 are damaged")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, gear + 8 * 5, NAN); });
+  EXPECT_TRUE(has(message, "Gear state of atom ID 2 holds nan (value 5 of 19)")) << message;
 }
