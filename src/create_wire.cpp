@@ -23,13 +23,17 @@
 #include "geometry/contact.h"
 #include "geometry/point_grid.h"
 #include "shape/shape_library.h"
+#include "nscd_gather.h"
+#include "wire/wire_overlap.h"
 #include "wire/wire_path.h"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace LAMMPS_NS;
@@ -87,7 +91,10 @@ void CreateWire::command(int narg, char **arg)
   check_types();
   lay_out();
   check_nodes_in_box();
-  if (request->check_overlap) check_overlaps();
+  if (request->check_overlap) {
+    check_overlaps();
+    check_wire_overlaps();
+  }
   create_nodes();
   create_bonds_and_angles();
   Special special(lmp);
@@ -156,18 +163,10 @@ void CreateWire::parse(int narg, char **arg)
     broadcast(problem);
     if (!problem.empty()) error->all(FLERR, "create_wire: {}", problem);
     broadcast(text);
-    std::istringstream lines(text);
-    std::string line;
-    for (int number_of_line = 1; std::getline(lines, line); number_of_line++) {
-      line = line.substr(0, line.find('#'));
-      std::istringstream words(line);
-      double x, y, z;
-      std::string extra;
-      if (!(words >> x)) continue;    // blank or comment
-      if (!(words >> y >> z) || (words >> extra))
-        error->all(FLERR, "create_wire: {}:{}: expected three numbers 'x y z', got '{}'", arg[2],
-                   number_of_line, line);
-      r.polyline.points.emplace_back(x, y, z);
+    try {
+      r.polyline = nscd::wire::read_polyline(text, arg[2]);
+    } catch (std::exception &e) {
+      error->all(FLERR, "create_wire: {}", e.what());
     }
     iarg = 3;
   } else {
@@ -410,6 +409,91 @@ void CreateWire::check_overlaps()
                    r.shape_name, k + 1, fix->id, -p.gap, allowed);
     }
   }
+}
+
+/* The periodic translations of the box that can bring one part of the new wire onto
+   another or onto a wire already there: every lattice vector up to the new wire's extent
+   (in box lengths, plus one) in each periodic direction. */
+static std::vector<nscd::Vec3> periodic_shifts(const Domain *domain, const std::vector<nscd::Vec3> &nodes)
+{
+  const nscd::Vec3 edges[3] = {nscd::Vec3(domain->xprd, 0.0, 0.0), nscd::Vec3(domain->xy, domain->yprd, 0.0),
+                               nscd::Vec3(domain->xz, domain->yz, domain->zprd)};
+  int reach[3] = {0, 0, 0};
+  for (int d = 0; d < 3; d++) {
+    if (!domain->periodicity[d]) continue;
+    double farthest = 0.0;
+    for (const nscd::Vec3 &x : nodes) farthest = std::max(farthest, std::abs(x[d] - 0.5 * (domain->boxlo[d] + domain->boxhi[d])));
+    reach[d] = (int) std::ceil(farthest / domain->prd[d]) + 1;
+  }
+  std::vector<nscd::Vec3> shifts;
+  for (int i = -reach[0]; i <= reach[0]; i++)
+    for (int j = -reach[1]; j <= reach[1]; j++)
+      for (int k = -reach[2]; k <= reach[2]; k++)
+        if (i || j || k) shifts.push_back(i * edges[0] + j * edges[1] + k * edges[2]);
+  return shifts;
+}
+
+/* The new wire must not lie on itself (turns of a helix closer than its diameter, a loop
+   reaching its own periodic image) nor on a wire already there: elements as
+   spherocylinders of the wire radius, the pairs the contact model would see
+   (lib/wire/wire_overlap.h), overlapping by more than the tolerance stop the command. The
+   existing wires' elements are gathered on every rank (a setup command). */
+void CreateWire::check_wire_overlaps()
+{
+  namespace wire = nscd::wire;
+  const Request &r = *request;
+  const double allowed = r.overlap * r.radius;
+  const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, r.layout.nodes);
+  const wire::WirePieces mine{r.layout.nodes, r.layout.topology.elements};
+  const wire::ElementOverlap self = wire::deepest_overlap_within(mine, r.radius, shifts);
+  if (self.depth > allowed) {
+    const auto &ea = r.layout.topology.elements[self.a], &eb = r.layout.topology.elements[self.b];
+    std::string why = "lay it elsewhere, raise 'overlap', or use 'overlap ignore'";
+    if (self.shift.squaredNorm() > 0.0)
+      why = fmt::format("the wire reaches its own periodic image, ({:.6g}, {:.6g}, {:.6g}) away: make it smaller "
+                        "than the periodic box or the box larger", self.shift.x(), self.shift.y(), self.shift.z());
+    else if (r.shape == Request::Shape::loop && r.loop.turns > 1.0 && std::abs(r.loop.pitch) < 2.0 * r.radius)
+      why = fmt::format("the pitch {:.6g} is below the wire's diameter {:.6g}, so its turns lie on each other: give "
+                        "a pitch of at least {:.6g}", r.loop.pitch, 2.0 * r.radius, 2.0 * r.radius);
+    error->all(FLERR, "create_wire {}: the new wire overlaps itself by {:.4g} (allowed: {:.4g}, {} x the wire "
+               "radius) between its elements {}-{} and {}-{} (node numbers along the path); {}", r.shape_name,
+               self.depth, allowed, r.overlap, ea.a + 1, ea.b + 1, eb.a + 1, eb.b + 1, why);
+  }
+
+  // The wires already there: their nodes and bonds from every rank, each element with its
+  // second node at the image nearest to its first.
+  struct Node {
+    tagint tag;
+    double x[3];
+  };
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  std::vector<Node> my_nodes;
+  std::vector<std::array<tagint, 2>> my_bonds;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (avec->shape[i] != 0) continue;
+    my_nodes.push_back({atom->tag[i], {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
+    for (int m = 0; m < atom->num_bond[i]; m++) my_bonds.push_back({atom->tag[i], atom->bond_atom[i][m]});
+  }
+  std::map<tagint, nscd::Vec3> where;
+  for (const Node &n : gather_records(my_nodes, world, true)) where[n.tag] = vec3(n.x);
+  std::vector<std::array<tagint, 2>> bonds;
+  wire::WirePieces existing;
+  for (const auto &b : gather_records(my_bonds, world, true)) {
+    const auto p = where.find(b[0]), q = where.find(b[1]);
+    if (p == where.end() || q == where.end()) continue;    // a bond to a grain: not a wire element
+    double delta[3] = {q->second.x() - p->second.x(), q->second.y() - p->second.y(), q->second.z() - p->second.z()};
+    domain->minimum_image(delta);
+    const int first = (int) existing.nodes.size();
+    existing.nodes.push_back(p->second);
+    existing.nodes.push_back(p->second + vec3(delta));
+    existing.elements.push_back({first, first + 1, 0.0});
+    bonds.push_back(b);
+  }
+  const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing, r.radius, shifts);
+  if (other.depth > allowed)
+    error->all(FLERR, "create_wire {}: the new wire overlaps the wire element between atoms ID {} and {} by {:.4g} "
+               "(allowed: {:.4g}, {} x the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
+               r.shape_name, bonds[other.b][0], bonds[other.b][1], other.depth, allowed, r.overlap);
 }
 
 /* Each rank creates the nodes whose positions lie in its sub-domain, with consecutive new

@@ -45,6 +45,12 @@ struct PolylinePath {
   std::vector<Vec3> points;
 };
 
+// The points of a polyline file (`create_wire polyline FILE`): one point "x y z" per line,
+// three decimal numbers (as in a deck: 1, -0.5, 2.5e-3); blank lines and comments (from '#')
+// are skipped. Throws WirePathError naming the source, the line number and the line for any
+// other line, e.g. a header line, nan, inf, or a number beyond the range of doubles (1e400).
+PolylinePath read_polyline(const std::string &text, const std::string &source_name);
+
 // Unit vectors e1, e2 with (e1, e2, axis) right-handed: angle 0 of a loop points along e1.
 // For the z axis e1 = x and e2 = y; otherwise e1 is the world axis least aligned with
 // `axis`, made perpendicular to it.

@@ -189,6 +189,68 @@ TEST_F(BadInputTest, GrainsWhoseCoresIntersectGetAWarning)
       << log;
 }
 
+// ---------------------------------------------------------------- wires
+
+class WireInputTest : public BadInputTest {
+ protected:
+  // A box (periodic as given) with one cube resting at the origin and the wire styles set up
+  // (elements 0.2 long, radius 0.02), no wire yet.
+  void wire_box(const std::string &boundary = "f f f")
+  {
+    commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+              "boundary " + boundary, "shapes read " + shape_file("cube.shapes", kCube),
+              "region box block -5 5 -5 5 -1 5",
+              "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 1 extra/angle/per/atom 1 "
+              "extra/special/per/atom 6",
+              "create_atoms 1 single 0 0 0.5", "shapes assign all shape 1 density 1", "bond_style wire",
+              "bond_coeff 1 100 0.2", "angle_style wire", "angle_coeff 1 0.01", "pair_style nscd",
+              "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+              "timestep 0.001", "group grains type 1"});
+  }
+  std::string create_wire(const std::string &path, const std::string &more = "")
+  {
+    return error_of("create_wire 2 " + path + " bond 1 angle 1 mass 0.01 radius 0.02 " + more);
+  }
+};
+
+// Lines of a polyline file that are not points stop the command naming the line (before:
+// a line whose first number could not be read was skipped as a comment, silently).
+TEST_F(WireInputTest, PolylineLinesThatAreNotPointsAreRefusedByLine)
+{
+  wire_box();
+  const std::pair<const char *, const char *> cases[] = {
+      {"0 -2 1\nnan -1 1\n1 -2 1\n", ":2: 'nan' is not a number"},
+      {"0 -2 1\ninf -1 1\n1 -2 1\n", ":2: 'inf' is not a number"},
+      {"0 -2 1\n1e400 -1 1\n1 -2 1\n", ":2: 1e400 is beyond the range"},
+      {"x y z\n0 -2 1\n1 -2 1\n", ":1: 'x' is not a number"},
+  };
+  for (const auto &c : cases) {
+    const std::string message = create_wire("polyline " + shape_file("path.txt", c.first), "strained yes");
+    EXPECT_TRUE(has(message, c.second)) << c.first << ": " << message;
+  }
+  const std::string path = shape_file("path.txt", "# x y z\n0 -2 1\n\n1 -2 1 # end\n");
+  EXPECT_EQ(create_wire("polyline " + path), "");
+}
+
+// A wire laid into itself or into another wire is refused, naming the overlap and why
+// (before: all three were accepted and the contacts blew the wires apart at the first step).
+TEST_F(WireInputTest, OverlappingWiresAreRefused)
+{
+  wire_box("p p f");
+  std::string message = create_wire("loop 0 0 2 2.5 turns 2 pitch 0.01");
+  EXPECT_TRUE(has(message, "overlaps itself by 0.03")) << message;
+  EXPECT_TRUE(has(message, "the pitch 0.01 is below the wire's diameter 0.04")) << message;
+  message = create_wire("loop 0 0 2 4.995", "strained yes");    // 10 wide, periodic in x and y
+  EXPECT_TRUE(has(message, "reaches its own periodic image")) << message;
+  EXPECT_EQ(create_wire("loop 0 0 2 2.5 turns 2 pitch 0.05"), "");    // atoms 2.. : the first wire
+  // across its turns at angle 0 (z = 2 and 2.05), 0.02 above the first
+  message = create_wire("line 2.5 -4 2.02 2.5 4 2.02");
+  EXPECT_TRUE(has(message, "overlaps the wire element between atoms ID")) << message;
+  EXPECT_TRUE(has(message, "between atoms ID 2 and 3 by 0.020")) << message;    // (the chord dips 6e-5)
+  EXPECT_EQ(create_wire("line 2.5 -4 2.2 2.5 4 2.2"), "");    // 0.1 above its end (z = 2.1): free
+  EXPECT_EQ(create_wire("line 2.5 -4 2.02 2.5 4 2.02", "overlap ignore"), "");
+}
+
 // ---------------------------------------------------------------- damaged restart files
 
 // A restart file of a scene with every style that writes restart data (pair nscd, fix nscd,
