@@ -21,7 +21,6 @@
 #include "special.h"
 
 #include "geometry/contact.h"
-#include "geometry/point_grid.h"
 #include "shape/shape_library.h"
 #include "nscd_gather.h"
 #include "wire/wire_overlap.h"
@@ -351,68 +350,8 @@ void CreateWire::check_nodes_in_box()
   }
 }
 
-/* The wire must not start inside grains or walls: each rank tests its own grains against
-   the elements near them (nearest periodic image), every rank the walls against the node
-   spheres; the deepest overlap beyond the tolerance stops the command, named. */
-void CreateWire::check_overlaps()
-{
-  Request &r = *request;
-  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
-  const auto &elements = r.layout.topology.elements;
-  std::vector<nscd::Vec3> middles;
-  for (const auto &e : elements) middles.push_back(0.5 * (r.layout.nodes[e.a] + r.layout.nodes[e.b]));
-  nscd::PointGrid grid;
-  grid.build(middles, std::max(r.layout.chord, 2.0 * r.radius));
-  const double allowed = r.overlap * r.radius;
-
-  double worst[2] = {-1.0, 0.0};    // overlap depth, grain ID
-  nscd::ContactWorkspace workspace;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (avec->shape[i] == 0) continue;
-    const nscd::Pose pose = avec->pose(i);
-    const double reach = avec->radius[i] + 0.5 * r.layout.chord + r.radius;
-    for (int shift = 0; shift < 27; shift++) {    // periodic images of the grain
-      nscd::Vec3 offset = nscd::Vec3::Zero();
-      bool skip = false;
-      for (int d = 0, code = shift; d < 3; d++, code /= 3) {
-        const int image = code % 3 - 1;
-        if (image != 0 && !domain->periodicity[d]) skip = true;
-        offset[d] = image * domain->prd[d];
-      }
-      if (skip) continue;
-      nscd::Pose shifted = pose;
-      shifted.position += offset;
-      grid.for_each_near(shifted.position, reach, [&](int e) {
-        const nscd::Segment segment{r.layout.nodes[elements[e].a], r.layout.nodes[elements[e].b], r.radius};
-        const nscd::SegmentGrainContact contact =
-            nscd::contact_segment_grain(segment, avec->shape_of(i), shifted, 0.0, workspace);
-        for (const nscd::SegmentContact &p : contact)
-          if (-p.gap > worst[0]) worst[0] = -p.gap, worst[1] = (double) atom->tag[i];
-      });
-    }
-  }
-  double deepest[2];
-  MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
-  if (deepest[0] > allowed)
-    error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}, {} x "
-               "the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
-               r.shape_name, (tagint) deepest[1], deepest[0], allowed, r.overlap);
-
-  for (Fix *fix : modify->get_fix_list()) {
-    auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
-    if (!boundary_fix) continue;
-    for (size_t k = 0; k < r.in_box.size(); k++) {
-      const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
-      if (-p.gap > allowed)
-        error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} "
-                   "(allowed: {:.4g}); lay the wire inside the walls, or use 'overlap ignore'",
-                   r.shape_name, k + 1, fix->id, -p.gap, allowed);
-    }
-  }
-}
-
 /* The periodic translations of the box that can bring one part of the new wire onto
-   another or onto a wire already there: every lattice vector up to the new wire's extent
+   another, onto a wire already there or onto a grain: every lattice vector up to the new wire's extent
    (in box lengths, plus one) in each periodic direction. */
 static std::vector<nscd::Vec3> periodic_shifts(const Domain *domain, const std::vector<nscd::Vec3> &nodes)
 {
@@ -431,6 +370,44 @@ static std::vector<nscd::Vec3> periodic_shifts(const Domain *domain, const std::
       for (int k = -reach[2]; k <= reach[2]; k++)
         if (i || j || k) shifts.push_back(i * edges[0] + j * edges[1] + k * edges[2]);
   return shifts;
+}
+
+/* The wire must not start inside grains or walls: each rank tests its own grains (and their
+   periodic images) against the elements near them, every rank the walls against the node
+   spheres; the deepest overlap beyond the tolerance stops the command, named. */
+void CreateWire::check_overlaps()
+{
+  Request &r = *request;
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  const double allowed = r.overlap * r.radius;
+  std::vector<nscd::wire::PlacedGrain> grains;
+  std::vector<tagint> grain_tags;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (avec->shape[i] == 0) continue;
+    grains.push_back({&avec->shape_of(i), avec->pose(i)});
+    grain_tags.push_back(atom->tag[i]);
+  }
+  const nscd::wire::ElementOverlap o = nscd::wire::deepest_overlap_with_grains(
+      {r.layout.nodes, r.layout.topology.elements}, r.radius, grains, periodic_shifts(domain, r.layout.nodes));
+  double worst[2] = {o.b >= 0 ? o.depth : -1.0, o.b >= 0 ? (double) grain_tags[o.b] : 0.0};    // depth, grain ID
+  double deepest[2];
+  MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
+  if (deepest[0] > allowed)
+    error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}, {} x "
+               "the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
+               r.shape_name, (tagint) deepest[1], deepest[0], allowed, r.overlap);
+
+  for (Fix *fix : modify->get_fix_list()) {
+    auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
+    if (!boundary_fix) continue;
+    for (size_t k = 0; k < r.in_box.size(); k++) {
+      const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
+      if (-p.gap > allowed)
+        error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} "
+                   "(allowed: {:.4g}); lay the wire inside the walls, or use 'overlap ignore'",
+                   r.shape_name, k + 1, fix->id, -p.gap, allowed);
+    }
+  }
 }
 
 /* The new wire must not lie on itself (turns of a helix closer than its diameter, a loop

@@ -167,6 +167,47 @@ void FixNSCDWall::setup(int /*vflag*/)
     error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); "
                "check the wall's position and that its normal points into the domain", id,
                any_outside, wall->kind == Wall::Kind::plane ? "behind the plane" : "outside the cylinder");
+  warn_about_grains_in_the_wall();
+}
+
+/* A grain reaching into the wall by more than a fifth of its bounding radius at the start of
+   a run (a cylinder narrower than the grains, grains placed into a wall) keeps that overlap:
+   contacts stop it from growing but do not push it out. Warned about, naming the grain, the
+   depth and, for a cylinder, its radius, as fix nscd warns about grains inside grains. */
+void FixNSCDWall::warn_about_grains_in_the_wall()
+{
+  struct {
+    double share;    // depth / bounding radius
+    int rank;
+  } mine{0.0, comm->me}, worst;
+  double found[3] = {0.0, 0.0, 0.0};    // depth, atom ID, bounding radius
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || wall->avec->shape[i] == 0) continue;
+    const nscd::Spheropolyhedron &shape = wall->avec->shape_of(i);
+    const nscd::ContactSet set = wall->kind == Wall::Kind::plane
+        ? nscd::contact_grain_plane(shape, wall->avec->pose(i), wall->plane, 0.0, wall->workspace)
+        : nscd::contact_grain_cylinder(shape, wall->avec->pose(i), wall->cylinder, 0.0, wall->workspace);
+    for (const nscd::ContactPoint &p : set)
+      if (-p.gap / shape.bounding_radius > mine.share) {
+        mine.share = -p.gap / shape.bounding_radius;
+        found[0] = -p.gap, found[1] = (double) atom->tag[i], found[2] = shape.bounding_radius;
+      }
+  }
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  if (!(worst.share > 0.2)) return;
+  MPI_Bcast(found, 3, MPI_DOUBLE, worst.rank, world);
+  if (comm->me != 0) return;
+  if (wall->kind == Wall::Kind::cylinder)
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at "
+                   "the start of the run ({:.3g} of its bounding radius {:.4g}){}. Contacts keep the overlap from "
+                   "growing but do not push it out: make the cylinder wider than the grains or place them inside it",
+                   id, (tagint) found[1], found[0], wall->cylinder.radius, worst.share, found[2],
+                   wall->cylinder.radius < found[2] ? ": the cylinder is narrower than the grain may need" : "");
+  else
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall at the start of the "
+                   "run ({:.3g} of its bounding radius {:.4g}). Contacts keep the overlap from growing but do not "
+                   "push it out: place the grains in front of the wall", id, (tagint) found[1], found[0],
+                   worst.share, found[2]);
 }
 
 bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const

@@ -172,7 +172,7 @@ WallBlock read_wall_block(const char *block, std::size_t available)
   refuse_newer(out.format, kWallFormat, "the wall");
   if (out.format >= 2) in.limit_to_stated_size();
   const double kind = in.value<double>("the wall's kind");
-  if (kind != 0.0 && kind != 1.0)
+  if ((kind != 0.0 && kind != 1.0) || std::signbit(kind))    // exactly as written (not -0)
     throw Damaged("the wall's kind is " + number(kind) + " (0 for a plane, 1 for a cylinder): the block is damaged");
   out.cylinder = kind == 1.0;
   for (double &x : out.point) {

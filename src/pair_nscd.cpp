@@ -72,37 +72,52 @@ void PairNSCD::allocate()
     }
 }
 
-/* pair_style nscd [activation D | activation/fraction F] [reach D | reach/fraction F] */
+/* pair_style nscd [activation D | activation/fraction F] [reach D | reach/fraction F]
+   Each distance is given once, in one of its two forms: two values for one distance are
+   refused rather than letting the later one win silently. */
 void PairNSCD::settings(int narg, char **arg)
 {
   activation_given = -1.0;
   activation_fraction = 0.1;
   reach_given = -1.0;
   reach_fraction = 0.5;
+  std::string activation_as, reach_as;    // the keyword and value that gave each distance
+  auto once = [&](std::string &given_as, const char *key, const char *value) {
+    const std::string now = fmt::format("{} {}", key, value);
+    if (!given_as.empty())
+      error->all(FLERR, "pair_style nscd: '{}' and '{}' both set the {} distance; give it once, as a distance "
+                 "or as a fraction of the smallest grain's bounding radius", given_as, now,
+                 strncmp(key, "activation", 10) == 0 ? "activation" : "reach");
+    given_as = now;
+  };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
     // (the text as given in the messages: older LAMMPS parse 1e400 as inf without a word)
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (strcmp(arg[iarg], "activation") == 0) {
+      once(activation_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
         error->all(FLERR, "pair_style nscd: activation {} must be finite and >= 0", arg[iarg + 1]);
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
-      if (!(value >= 0.0 && value <= 1.0))
-        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, 1] (a fraction of "
+      once(activation_as, arg[iarg], arg[iarg + 1]);
+      if (!(value >= 0.0 && value <= nscd_restart::kMaxActivationFraction))
+        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, {}] (a fraction of "
                    "the smallest grain's bounding radius); for fast grains lower the timestep",
-                   value);
+                   value, nscd_restart::kMaxActivationFraction);
       activation_given = -1.0;
       activation_fraction = value;
     } else if (strcmp(arg[iarg], "reach") == 0) {
+      once(reach_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
         error->all(FLERR, "pair_style nscd: reach {} must be finite and >= 0", arg[iarg + 1]);
       reach_given = value;
     } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
-      if (!(value >= 0.0 && value <= 20.0))
-        error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, 20] (a multiple of the "
-                   "smallest grain's bounding radius)", value);
+      once(reach_as, arg[iarg], arg[iarg + 1]);
+      if (!(value >= 0.0 && value <= nscd_restart::kMaxReachFraction))
+        error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, {}] (a multiple of the "
+                   "smallest grain's bounding radius)", value, nscd_restart::kMaxReachFraction);
       reach_given = -1.0;
       reach_fraction = value;
     } else {

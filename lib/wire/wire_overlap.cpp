@@ -89,6 +89,37 @@ ElementOverlap deepest_overlap_within(const WirePieces &wire, double radius, con
   return deepest;
 }
 
+ElementOverlap deepest_overlap_with_grains(const WirePieces &wire, double radius, const std::vector<PlacedGrain> &grains,
+                                           const std::vector<Vec3> &shifts)
+{
+  ElementOverlap deepest;
+  if (wire.elements.empty()) return deepest;
+  std::vector<Vec3> middles;
+  for (const WireElement &e : wire.elements) middles.push_back(middle(wire, e));
+  const double half = longest_half(wire);
+  PointGrid grid;
+  grid.build(middles, std::max(2.0 * half, 2.0 * radius) + 1e-300);
+  std::vector<Vec3> all_shifts = {Vec3::Zero()};
+  for (const Vec3 &s : shifts)
+    if (s.squaredNorm() > 0.0) all_shifts.push_back(s);
+  ContactWorkspace workspace;
+  for (int g = 0; g < (int) grains.size(); g++) {
+    const PlacedGrain &grain = grains[g];
+    const double reach = grain.shape->bounding_radius + half + radius;
+    for (const Vec3 &shift : all_shifts) {
+      Pose shifted = grain.pose;
+      shifted.position += shift;
+      grid.for_each_near(shifted.position, reach, [&](int a) {
+        const WireElement &e = wire.elements[a];
+        const Segment segment{wire.nodes[e.a], wire.nodes[e.b], radius};
+        for (const SegmentContact &p : contact_segment_grain(segment, *grain.shape, shifted, 0.0, workspace))
+          if (p.gap < 0.0) keep_deepest(deepest, a, g, shift, -p.gap);
+      });
+    }
+  }
+  return deepest;
+}
+
 ElementOverlap deepest_overlap_between(const WirePieces &first, const WirePieces &second, double radius,
                                        const std::vector<Vec3> &shifts)
 {

@@ -1,11 +1,14 @@
-// Overlaps between wire elements (spherocylinders of the wire's radius) that the contact
-// model would treat as contacts: for create_wire, which refuses to lay a wire into itself
-// (turns of a helix closer than the wire's diameter, a loop reaching its own periodic image)
-// or into a wire already there. Elements joined by a node or by one element are exempt, as
-// in the contact model (that is the wire's own bending). Pure geometry, no LAMMPS.
+// Overlaps of wire elements (spherocylinders of the wire's radius) with each other, as the
+// contact model would see them, and with grains: for create_wire, which refuses to lay a
+// wire into itself (turns of a helix closer than the wire's diameter, a loop reaching its
+// own periodic image), into a wire already there or into grains, and for fix wire, which
+// warns about elements inside grains at the start of a run. Between elements of one wire,
+// those joined by a node or by one element are exempt, as in the contact model (that is
+// the wire's own bending). Pure geometry, no LAMMPS.
 #pragma once
 
 #include "math/types.h"
+#include "shape/spheropolyhedron.h"
 #include "wire/elastic_forces.h"
 
 #include <vector>
@@ -35,5 +38,16 @@ ElementOverlap deepest_overlap_within(const WirePieces &wire, double radius, con
 // Between two wires (no pair exempt), the second also shifted by each of `shifts`.
 ElementOverlap deepest_overlap_between(const WirePieces &first, const WirePieces &second, double radius,
                                        const std::vector<Vec3> &shifts);
+
+// A grain where it stands.
+struct PlacedGrain {
+  const Spheropolyhedron *shape;
+  Pose pose;
+};
+
+// The deepest overlap of the wire's elements with the grains, each grain also shifted by
+// each of `shifts` (zero vectors are ignored there): element a, grain b (indices).
+ElementOverlap deepest_overlap_with_grains(const WirePieces &wire, double radius, const std::vector<PlacedGrain> &grains,
+                                           const std::vector<Vec3> &shifts);
 
 }    // namespace nscd::wire

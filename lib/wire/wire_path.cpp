@@ -62,6 +62,10 @@ std::vector<double> walk(const Curve &at, double length, double chord, int max_n
 
 WireLayout layout_from(const Curve &at, const std::vector<double> &ts, double chord, bool closed)
 {
+  // a path that turns back within one element (found by fuzzing: tests/fuzz/regressions/polyline)
+  if (ts.size() < 2)
+    throw WirePathError("element length " + text(chord) + " is longer than the straight distance from the path's "
+                        "start to any of its points: no second node fits; use shorter elements");
   WireLayout layout;
   for (double t : ts) layout.nodes.push_back(at(t));
   layout.closed = closed;

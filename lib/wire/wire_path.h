@@ -65,7 +65,8 @@ struct WireLayout {
 
 // Nodes `chord` apart along the path (see the file comment). Throws WirePathError for a
 // chord that is not positive, that does not fit into the path (a loop's chord must be
-// below its diameter), or a path with coinciding points.
+// below its diameter; no point of the path as far as a chord from its start), or a path
+// with coinciding points.
 WireLayout lay_loop(const LoopPath &path, double chord);
 WireLayout lay_polyline(const PolylinePath &path, double chord);
 

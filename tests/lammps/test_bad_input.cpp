@@ -129,6 +129,19 @@ TEST_F(BadInputTest, ActivationBeyondTheGrainsIsRefused)
   EXPECT_TRUE(has(error_of("run 1"), "activation 100"));
 }
 
+// One distance given twice (in its two forms, or one keyword twice) is refused naming both
+// (before: the later one won silently).
+TEST_F(BadInputTest, PairStyleDistancesGivenTwiceAreRefused)
+{
+  box();
+  std::string message = error_of("pair_style nscd activation 0.1 activation/fraction 0.2");
+  EXPECT_TRUE(has(message, "'activation 0.1' and 'activation/fraction 0.2' both set the activation distance")) << message;
+  message = error_of("pair_style nscd reach/fraction 1 reach 0.3");
+  EXPECT_TRUE(has(message, "'reach/fraction 1' and 'reach 0.3' both set the reach distance")) << message;
+  EXPECT_TRUE(has(error_of("pair_style nscd reach 0.1 reach 0.2"), "'reach 0.1' and 'reach 0.2'"));
+  EXPECT_EQ(error_of("pair_style nscd activation 0.1 reach/fraction 1"), "");
+}
+
 TEST_F(BadInputTest, NonFiniteTimestepOrLoadIsRefused)
 {
   resting_cubes();
@@ -249,6 +262,55 @@ TEST_F(WireInputTest, OverlappingWiresAreRefused)
   EXPECT_TRUE(has(message, "between atoms ID 2 and 3 by 0.020")) << message;    // (the chord dips 6e-5)
   EXPECT_EQ(create_wire("line 2.5 -4 2.2 2.5 4 2.2"), "");    // 0.1 above its end (z = 2.1): free
   EXPECT_EQ(create_wire("line 2.5 -4 2.02 2.5 4 2.02", "overlap ignore"), "");
+}
+
+// A wire that can touch nothing in a scene with grains or walls: refused when k_n was not
+// given, warned about for 'k_n 0'; compute wire/contacts has nothing to report then (before:
+// the wire fell through the floor and the cube without a word).
+TEST_F(WireInputTest, AWireWithoutContactsAmongGrainsIsRefusedOrWarned)
+{
+  wire_box();
+  commands({"create_wire 2 line -3 -2 1 3 -2 1 bond 1 angle 1 mass 0.01 radius 0.02", "group wire type 2",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1", "fix g all gravity 1.0 vector 0 0 -1",
+            "fix solver grains nscd", "fix w wire wire radius 0.02"});
+  std::string message = error_of("run 1");
+  EXPECT_TRUE(has(message, "fix wire w: no contact stiffness k_n given")) << message;
+  EXPECT_TRUE(has(message, "grains, walls and plate")) << message;
+  commands({"unfix w", "fix w wire wire radius 0.02 k_n 0"});
+  EXPECT_TRUE(has(log_of({"run 1"}), "fix wire w: k_n 0: the wire has no contacts"));
+  run("compute wc all wire/contacts");
+  message = error_of("run 1");
+  EXPECT_TRUE(has(message, "compute wire/contacts wc: fix wire w has no contacts (k_n 0)")) << message;
+  commands({"uncompute wc", "unfix w", "fix w wire wire radius 0.02 k_n 200", "compute wc all wire/contacts"});
+  EXPECT_EQ(error_of("run 1"), "");
+}
+
+// An element inside a grain at the start of a run is warned about, naming nodes, grain and
+// depth (before: no word, and the wire was blown out at ~70 velocity units here).
+TEST_F(WireInputTest, AWireInsideAGrainAtTheStartOfARunIsWarnedAbout)
+{
+  wire_box();
+  commands({"create_wire 2 line -3 0 0.5 3 0 0.5 bond 1 angle 1 mass 0.01 radius 0.02 overlap ignore",
+            "group wire type 2", "fix solver grains nscd", "fix w wire wire radius 0.02 k_n 200"});
+  const std::string log = log_of({"run 0"});
+  EXPECT_TRUE(has(log, "lies inside grain ID 1 by 0.52 (26 wire radii) at the start of the run")) << log;
+  EXPECT_TRUE(has(log, "push it out at about 73.5")) << log;    // 0.52 sqrt(200 / 0.01)
+  // a wire resting on the cube (0.001 into it): no warning
+  commands({"delete_atoms group wire bond yes", "create_wire 2 line -3 0 1.019 3 0 1.019 bond 1 angle 1 mass 0.01",
+            "group wire type 2"});
+  EXPECT_FALSE(has(log_of({"run 0"}), "lies inside grain"));
+}
+
+// create_wire's radius defaults to fix wire's (before: fix wire did not hand it over, and
+// create_wire asked for a radius although fix wire was defined).
+TEST_F(WireInputTest, CreateWireTakesTheRadiusOfFixWire)
+{
+  wire_box();
+  commands({"group wire type 2", "fix w wire wire radius 0.02 k_n 200"});
+  EXPECT_EQ(error_of("create_wire 2 line -3 -2 1 3 -2 1 bond 1 angle 1 mass 0.01"), "");
+  // and with fix wire's radius 0.5 the 0.2 elements are below the diameter
+  commands({"unfix w", "fix w wire wire radius 0.5 k_n 200"});
+  EXPECT_TRUE(has(error_of("create_wire 2 line -3 -3 1 3 -3 1 bond 1 angle 1 mass 0.01"), "below the wire's diameter 1"));
 }
 
 // ---------------------------------------------------------------- damaged restart files

@@ -239,3 +239,19 @@ TEST(WirePath, PolylineFileLinesThatAreNotPointsAreRefusedByLine)
   };
   for (const auto &c : cases) EXPECT_NE(problem(c.first).find(c.second), std::string::npos) << c.first << " -> " << problem(c.first);
 }
+
+// A path that turns back within one element has no point a chord away from its start: a
+// WirePathError (before: std::invalid_argument from the chain topology, "a chain needs at
+// least 2 nodes"; found by fuzzing, tests/fuzz/regressions/polyline).
+TEST(WirePath, PathTurningBackWithinOneElementIsRefused)
+{
+  PolylinePath path;
+  path.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.1, 0, 0.1)};    // 1.906 long, never > 1 from its start
+  try {
+    lay_polyline(path, 1.5);
+    FAIL() << "no error";
+  } catch (const WirePathError &e) {
+    EXPECT_NE(std::string(e.what()).find("no second node fits"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(lay_polyline(path, 0.9).nodes.size(), 2u);    // (0.9, 0, 0): the rest lies within 0.81 of it
+}
