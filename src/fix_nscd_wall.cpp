@@ -202,7 +202,7 @@ void FixNSCDWall::warn_about_grains_in_the_wall()
                    "the start of the run ({:.3g} of its bounding radius {:.4g}){}. Contacts keep the overlap from "
                    "growing but do not push it out: make the cylinder wider than the grains or place them inside it",
                    id, (tagint) found[1], found[0], wall->cylinder.radius, worst.share, found[2],
-                   wall->cylinder.radius < found[2] ? ": the cylinder is narrower than the grain may need" : "");
+                   wall->cylinder.radius < found[2] ? "; the radius is below the grain's bounding radius: it may not fit at all" : "");
   else
     error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall at the start of the "
                    "run ({:.3g} of its bounding radius {:.4g}). Contacts keep the overlap from growing but do not "

@@ -158,6 +158,49 @@ TEST_F(BadInputTest, NonFiniteTimestepOrLoadIsRefused)
   EXPECT_TRUE(has(message, "fix plate")) << message;
 }
 
+// A cylinder narrower than the grain: warned at the start of the run naming the radius
+// (before: the run went on with a 0.41 overlap and no message).
+TEST_F(BadInputTest, CylinderNarrowerThanAGrainIsWarnedAbout)
+{
+  resting_cubes();
+  run("group first id 1");    // the cube at the origin
+  run("fix silo first nscd/wall cylinder 0 0 0 0 0 1 0.3");
+  const std::string log = log_of({"run 0"});
+  EXPECT_TRUE(has(log, "fix nscd/wall silo: grain ID 1 reaches 0.4071 into the cylinder wall of radius 0.3")) << log;
+  EXPECT_TRUE(has(log, "below the grain's bounding radius")) << log;
+  run("unfix silo");
+  run("fix silo first nscd/wall cylinder 0 0 0 0 0 1 1");    // holds the cube
+  EXPECT_FALSE(has(log_of({"run 0"}), "into the cylinder wall"));
+}
+
+// Masses the solver cannot square are refused naming them (before: a cube of mass 1e-300 on
+// another ran 1000 unconverged sweeps every step, and the warnings never named the mass).
+TEST_F(BadInputTest, MassesBeyondWhatTheSolverSquaresAreRefused)
+{
+  resting_cubes();
+  run("group top id 2");
+  std::string message = error_of("shapes assign top shape 1 mass 1e-300");
+  EXPECT_TRUE(has(message, "mass 1e-300 gives a grain of mass 1e-300, outside the 1e-100 to 1e+100")) << message;
+  EXPECT_TRUE(has(message, "change the mass unit")) << message;
+  message = error_of("fix plate all nscd/plate 3 mass 1e-300");
+  EXPECT_TRUE(has(message, "fix nscd/plate: mass 1e-300 is outside the 1e-100 to 1e+100")) << message;
+  EXPECT_EQ(error_of("shapes assign top shape 1 mass 1e-100"), "");
+}
+
+// A load rate the scene cannot take: the plate sinking into the grains is warned about once,
+// naming load and rate (before: 1e9 put it 0.58 bounding radii deep silently, 1e12 through
+// the grains with only "Lost atoms" at the end).
+TEST_F(BadInputTest, PlateSinkingUnderAHugeLoadRateIsWarnedAbout)
+{
+  resting_cubes();
+  commands({"fix plate all nscd/plate 1.5 mass 1 rate 1e9"});
+  const std::string log = log_of({"run 20"});
+  EXPECT_TRUE(has(log, "fix nscd/plate plate: step 2: the plate is 0.577 of a grain's bounding radius deep")) << log;
+  EXPECT_TRUE(has(log, "rate 1e+09")) << log;
+  commands({"unfix plate", "fix plate all nscd/plate 1.5 mass 1 rate 1e3"});
+  EXPECT_FALSE(has(log_of({"run 20"}), "deep in the grains"));
+}
+
 TEST_F(BadInputTest, AnotherIntegratorOfTheGrainsIsRefused)
 {
   resting_cubes();

@@ -316,6 +316,11 @@ TEST(GrainInertia, DensityAndMassMustGiveFiniteNormalValues)
   EXPECT_HAS(error_of([&] { grain_inertia_from_density(cube, 1e308); }), "not all finite positive numbers");
   EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, NAN); }), "mass nan is invalid");
   EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-310); }), "gives a grain of mass");
+  // normal numbers, but beyond what the solver can square (before: 1000 unconverged sweeps a step)
+  EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-300); }), "mass 1e-300 gives a grain of mass 1e-300, outside the 1e-100 to 1e+100");
+  EXPECT_HAS(error_of([&] { grain_inertia_from_density(cube, 1e101); }), "outside the 1e-100 to 1e+100");
+  EXPECT_NO_THROW(grain_inertia_from_mass(cube, 1e-100));
+  EXPECT_NO_THROW(grain_inertia_from_mass(cube, 1e100));
 }
 
 TEST(ShapeFiles, DirectoryEmptyLibraryAndControlBytesGetClearMessages)
