@@ -1,6 +1,7 @@
 /* bond_style wire: LAMMPS glue around nscd::wire::axial_element_forces. */
 
 #include "bond_wire.h"
+#include "nscd_args.h"
 #include "nscd_arrays.h"
 
 #include "wire/elastic_forces.h"
@@ -97,8 +98,8 @@ void BondWire::coeff(int narg, char **arg)
   if (!allocated) allocate();
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double stiffness = utils::numeric(FLERR, arg[1], false, lmp);
-  const double rest = utils::numeric(FLERR, arg[2], false, lmp);
+  const double stiffness = nscd_args::number(lmp, "bond_coeff wire", "k_elo", arg[1]);
+  const double rest = nscd_args::number(lmp, "bond_coeff wire", "rest length r0", arg[2]);
   const std::string problem = problem_of(stiffness, rest);
   if (!problem.empty()) error->all(FLERR, "bond_coeff wire: {}", problem);
   bool string = false;

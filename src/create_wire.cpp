@@ -3,6 +3,7 @@
    their positions and the bonds and angles on the nodes that store them. */
 
 #include "create_wire.h"
+#include "nscd_args.h"
 
 #include "angle.h"
 #include "atom.h"
@@ -130,24 +131,29 @@ void CreateWire::parse(int narg, char **arg)
   const char *usage = "expected 'create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 "
                       "Z1 X2 Y2 Z2 | polyline FILE, then bond BTYPE mass M [angle ATYPE] ...'";
   if (narg < 3) error->all(FLERR, "Illegal create_wire command: {}", usage);
-  r.node_type = utils::inumeric(FLERR, arg[0], false, lmp);
+  r.node_type = (int) nscd_args::whole(lmp, "create_wire", "atom type", arg[0], INT_MIN, INT_MAX);
   if (r.node_type < 1 || r.node_type > atom->ntypes)
     error->all(FLERR, "create_wire: atom type {} is not between 1 and {}", r.node_type, atom->ntypes);
   r.shape_name = arg[1];
-  auto number = [&](int i) { return utils::numeric(FLERR, arg[i], false, lmp); };
-  auto point = [&](int i) { return nscd::Vec3(number(i), number(i + 1), number(i + 2)); };
+  // a number of the path (named by its place in the usage) or of a keyword (named by it)
+  auto number = [&](int i, const std::string &what = "") {
+    return nscd_args::number(lmp, "create_wire " + r.shape_name, what.empty() ? arg[i - 1] : what, arg[i]);
+  };
+  auto point = [&](int i, const std::string &what) {
+    return nscd::Vec3(number(i, what + " x"), number(i + 1, what + " y"), number(i + 2, what + " z"));
+  };
   int iarg;
   if (r.shape_name == "loop" || r.shape_name == "helix") {
     const int args = r.shape_name == "loop" ? 4 : 5;
     if (narg < 2 + args) error->all(FLERR, "Illegal create_wire {} command: {}", r.shape_name, usage);
-    r.loop.centre = point(2);
-    r.loop.radius = number(5);
-    if (r.shape_name == "helix") r.loop.pitch = number(6);
+    r.loop.centre = point(2, "centre");
+    r.loop.radius = number(5, "radius R");
+    if (r.shape_name == "helix") r.loop.pitch = number(6, "pitch");
     iarg = 2 + args;
   } else if (r.shape_name == "line") {
     if (narg < 8) error->all(FLERR, "Illegal create_wire line command: {}", usage);
     r.shape = Request::Shape::polyline;
-    r.polyline.points = {point(2), point(5)};
+    r.polyline.points = {point(2, "start"), point(5, "end")};
     iarg = 8;
   } else if (r.shape_name == "polyline") {
     r.shape = Request::Shape::polyline;
@@ -182,11 +188,11 @@ void CreateWire::parse(int narg, char **arg)
       error->all(FLERR, "create_wire: '{}' applies to a loop or helix, not a {}", key, r.shape_name);
     if (key == "bond") {
       need(1);
-      r.bond_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      r.bond_type = (int) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "angle") {
       need(1);
-      r.angle_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      r.angle_type = (int) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "mass") {
       need(1);
@@ -212,19 +218,18 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 2;
     } else if (key == "axis") {
       need(3);
-      r.loop.axis = point(iarg + 1);
+      r.loop.axis = point(iarg + 1, "axis");
       iarg += 4;
     } else if (key == "nodes") {
       need(1);
-      const bigint n = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+      const bigint n = nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1]);
       if (n < 2 || n > 100000000)
         error->all(FLERR, "create_wire: nodes {} must be between 2 and 100000000", n);
       r.nodes = (int) n;
       iarg += 2;
     } else if (key == "mol") {
       need(1);
-      r.molecule = utils::tnumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (r.molecule < 1) error->all(FLERR, "create_wire: molecule ID {} must be >= 1", r.molecule);
+      r.molecule = (tagint) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
       iarg += 2;
     } else if (key == "radius") {
       need(1);

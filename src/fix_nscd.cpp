@@ -2,6 +2,7 @@
    ghost exchanges between sweeps, and moves the grains (Moreau-Jean). */
 
 #include "fix_nscd.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -97,15 +98,15 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
     const char *value = arg[iarg + 1];
-    if (key == "theta") solver->options.theta = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "tolerance") solver->options.tolerance = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "max_sweeps") solver->options.max_sweeps = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "relaxation") solver->options.relaxation = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "seed") solver->options.seed = (std::uint64_t) utils::bnumeric(FLERR, value, false, lmp);
-    else if (key == "exchange") exchange_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "check") solver->options.check_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "warn") warn_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "overlap_speed") solver->options.overlap_speed = utils::numeric(FLERR, value, false, lmp);
+    if (key == "theta") solver->options.theta = nscd_args::number(lmp, "fix nscd", key, value);
+    else if (key == "tolerance") solver->options.tolerance = nscd_args::number(lmp, "fix nscd", key, value);
+    else if (key == "max_sweeps") solver->options.max_sweeps = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "relaxation") solver->options.relaxation = nscd_args::number(lmp, "fix nscd", key, value);
+    else if (key == "seed") solver->options.seed = (std::uint64_t) nscd_args::whole(lmp, "fix nscd", key, value);
+    else if (key == "exchange") exchange_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "check") solver->options.check_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "warn") warn_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "overlap_speed") solver->options.overlap_speed = nscd_args::number(lmp, "fix nscd", key, value);
     else if (key == "order") {
       const std::string order = value;
       if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
@@ -177,6 +178,22 @@ void FixNSCD::init()
   check_no_other_integrator();
   check_no_points_in_group();
   check_grains_are_consistent();
+  check_overlap_speed();
+}
+
+/* overlap_speed pushes overlapping grains apart by up to V dt per step. Faster than contacts
+   are looked for ahead (pair_style nscd activation + reach) the grains pushed apart run into
+   others unseen, and a large V shoots them out of the box ("Lost atoms" was all a user saw
+   of overlap_speed 1e6): refused, naming the speed that fits. */
+void FixNSCD::check_overlap_speed()
+{
+  const double ahead = pair->activation_distance() + pair->reach_distance();
+  const double speed = solver->options.overlap_speed;
+  if (speed * dt <= ahead) return;
+  error->all(FLERR, "fix nscd: overlap_speed {} separates overlapping grains by up to {:.4g} per step (timestep "
+             "{}), more than contacts are looked for ahead ({:.4g}, pair_style nscd activation + reach): they "
+             "would run into other grains unseen or fly apart. Use at most {:.4g} (overlap_speed is meant to "
+             "remove small overlaps over a few steps, e.g. 0.05)", speed, speed * dt, dt, ahead, ahead / dt);
 }
 
 /* A grain also moved by another integrator (fix nve, fix rigid, ...) would move twice per

@@ -2,6 +2,7 @@
    and its motion along z. */
 
 #include "fix_nscd_plate.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -74,9 +75,9 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 6 || strcmp(arg[4], "mass") != 0)
     error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix ID group nscd/plate Z mass M "
                "[load F0] [rate R] [gravity G] [friction MU] [restitution E]'");
-  p.z = p.z_start = utils::numeric(FLERR, arg[3], false, lmp);
+  p.z = p.z_start = nscd_args::number(lmp, "fix nscd/plate", "height Z", arg[3]);
   if (!std::isfinite(p.z)) error->all(FLERR, "fix nscd/plate: the height {} must be finite", arg[3]);
-  p.mass = utils::numeric(FLERR, arg[5], false, lmp);
+  p.mass = nscd_args::number(lmp, "fix nscd/plate", "mass", arg[5]);
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
     error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", p.mass);
   if (p.mass < nscd::kMinBodyMass || p.mass > nscd::kMaxBodyMass)
@@ -85,7 +86,7 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd/plate: keyword '{}' needs a value", key);
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value = nscd_args::number(lmp, "fix nscd/plate", key, arg[iarg + 1]);
     if (!std::isfinite(value))
       error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
     if (key == "load") p.load_start = value;

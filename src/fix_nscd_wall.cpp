@@ -1,6 +1,7 @@
 /* fix nscd/wall: the wall's contacts with owned grains, via lib/geometry. */
 
 #include "fix_nscd_wall.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -20,10 +21,11 @@
 using namespace LAMMPS_NS;
 
 namespace {
-nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
+nscd::Vec3 read_vec3(LAMMPS *lmp, const char *what, char **arg)
 {
-  return nscd::Vec3(utils::numeric(FLERR, arg[0], false, lmp), utils::numeric(FLERR, arg[1], false, lmp),
-                    utils::numeric(FLERR, arg[2], false, lmp));
+  nscd::Vec3 v;
+  for (int d = 0; d < 3; d++) v[d] = nscd_args::number(lmp, "fix nscd/wall", fmt::format("{} {}", what, "xyz"[d]), arg[d]);
+  return v;
 }
 
 }    // namespace
@@ -74,8 +76,8 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
   if (strcmp(arg[3], "plane") == 0) {
     if (narg < 10) error->all(FLERR, "Illegal fix nscd/wall plane command: {}", usage);
     wall->kind = Wall::Kind::plane;
-    wall->plane.point = read_vec3(lmp, &arg[4]);
-    const nscd::Vec3 n = read_vec3(lmp, &arg[7]);
+    wall->plane.point = read_vec3(lmp, "plane point", &arg[4]);
+    const nscd::Vec3 n = read_vec3(lmp, "plane normal", &arg[7]);
     if (!(n.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the plane normal (0 0 0) has no direction");
     wall->plane.normal = n.normalized();
     iarg = 10;
@@ -83,11 +85,11 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
     if (narg < 11) error->all(FLERR, "Illegal fix nscd/wall cylinder command: {}", usage);
     wall->kind = Wall::Kind::cylinder;
     nscd::CylinderWall &cylinder = wall->cylinder;
-    cylinder.axis_point = read_vec3(lmp, &arg[4]);
-    const nscd::Vec3 a = read_vec3(lmp, &arg[7]);
+    cylinder.axis_point = read_vec3(lmp, "cylinder axis point", &arg[4]);
+    const nscd::Vec3 a = read_vec3(lmp, "cylinder axis", &arg[7]);
     if (!(a.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the cylinder axis (0 0 0) has no direction");
     cylinder.axis_direction = a.normalized();
-    cylinder.radius = utils::numeric(FLERR, arg[10], false, lmp);
+    cylinder.radius = nscd_args::number(lmp, "fix nscd/wall", "cylinder radius", arg[10]);
     if (!(cylinder.radius > 0.0))
       error->all(FLERR, "fix nscd/wall: cylinder radius {} must be positive", cylinder.radius);
     iarg = 11;
@@ -108,21 +110,21 @@ int FixNSCDWall::parse_option(int narg, char **arg, int iarg)
 {
   const std::string key = arg[iarg];
   if (key == "friction" && iarg + 1 < narg) {
-    const double friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double friction = nscd_args::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
     if (!(friction >= 0.0) || !std::isfinite(friction))
       error->all(FLERR, "fix nscd/wall: friction {} must be finite and >= 0", friction);
     wall->friction = friction;
     return iarg + 2;
   }
   if (key == "restitution" && iarg + 1 < narg) {
-    const double restitution = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double restitution = nscd_args::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
     if (!(restitution >= 0.0 && restitution <= 1.0))
       error->all(FLERR, "fix nscd/wall: restitution {} must be in [0, 1]", restitution);
     wall->restitution = restitution;
     return iarg + 2;
   }
   if (key == "velocity" && iarg + 3 < narg) {
-    wall->velocity = read_vec3(lmp, &arg[iarg + 1]);
+    wall->velocity = read_vec3(lmp, "velocity", &arg[iarg + 1]);
     return iarg + 4;
   }
   error->all(FLERR, "fix nscd/wall: unknown or incomplete keyword '{}' (expected friction MU, "

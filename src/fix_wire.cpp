@@ -4,6 +4,7 @@
    output. The physics is in lib/wire (doc/wire_model.md). */
 
 #include "fix_wire.h"
+#include "nscd_args.h"
 #include "fix_wire_lib.h"
 
 #include "angle_wire.h"
@@ -116,12 +117,12 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   if (key == "substeps") {
     requested_dt_sp = 0.0;
     const bool automatic = strcmp(value, "auto") == 0;    // 0 inside: choose
-    requested_substeps = automatic ? 0 : utils::inumeric(FLERR, value, false, lmp);
+    requested_substeps = automatic ? 0 : (int) nscd_args::whole(lmp, "fix wire", key, value, INT_MIN, INT_MAX);
     if (!automatic && requested_substeps < 1) error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
     return;
   }
   const auto option = plain.find(key);
-  const double x = utils::numeric(FLERR, value, false, lmp);
+  const double x = nscd_args::number(lmp, "fix wire", key, value);
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
   if (key == "skin" && !(x > 0.0)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);

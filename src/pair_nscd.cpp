@@ -1,6 +1,7 @@
 /* pair_style nscd: narrow phase over LAMMPS' neighbour list, contact laws per type pair. */
 
 #include "pair_nscd.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -94,7 +95,7 @@ void PairNSCD::settings(int narg, char **arg)
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
     // (the text as given in the messages: older LAMMPS parse 1e400 as inf without a word)
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value = nscd_args::number(lmp, "pair_style nscd", arg[iarg], arg[iarg + 1]);
     if (strcmp(arg[iarg], "activation") == 0) {
       once(activation_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
@@ -137,14 +138,14 @@ void PairNSCD::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const double friction_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double friction_one = nscd_args::number(lmp, "pair_coeff nscd", "friction", arg[2]);
   if (!(friction_one >= 0.0) || !std::isfinite(friction_one))
     error->all(FLERR, "pair_coeff nscd: friction coefficient {} must be finite and >= 0", friction_one);
   double restitution_one = 0.0;
   if (narg == 5) {
     if (strcmp(arg[3], "restitution") != 0)
       error->all(FLERR, "pair_coeff nscd: unknown keyword '{}' (expected restitution)", arg[3]);
-    restitution_one = utils::numeric(FLERR, arg[4], false, lmp);
+    restitution_one = nscd_args::number(lmp, "pair_coeff nscd", "restitution", arg[4]);
     if (!(restitution_one >= 0.0 && restitution_one <= 1.0))
       error->all(FLERR, "pair_coeff nscd: restitution {} must be in [0, 1]", restitution_one);
   }

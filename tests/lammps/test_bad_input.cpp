@@ -201,6 +201,38 @@ TEST_F(BadInputTest, PlateSinkingUnderAHugeLoadRateIsWarnedAbout)
   EXPECT_FALSE(has(log_of({"run 20"}), "deep in the grains"));
 }
 
+// Numbers of the package's keywords: nan, inf, a fraction for a count, a word, a number
+// beyond doubles: each refused naming the command, the keyword and the value (before:
+// LAMMPS' parser named only the value, "Expected floating point parameter instead of 'nan'").
+TEST_F(BadInputTest, BadNumbersNameTheCommandAndKeyword)
+{
+  box();
+  EXPECT_TRUE(has(error_of("fix solver all nscd tolerance nan"), "fix nscd: tolerance 'nan' is not a finite number"));
+  EXPECT_TRUE(has(error_of("fix solver all nscd max_sweeps 2.5"), "fix nscd: max_sweeps 2.5 must be a whole number"));
+  EXPECT_TRUE(has(error_of("fix solver all nscd theta -inf"), "fix nscd: theta '-inf' is not a finite number"));
+  EXPECT_TRUE(has(error_of("fix solver all nscd relaxation abc"), "fix nscd: relaxation 'abc' is not a number"));
+  EXPECT_TRUE(has(error_of("pair_style nscd reach 1e400"), "pair_style nscd: reach 1e400 is beyond the range"));
+  run("pair_style nscd");
+  EXPECT_TRUE(has(error_of("pair_coeff * * nan"), "pair_coeff nscd: friction 'nan' is not a finite number"));
+  EXPECT_TRUE(has(error_of("fix w all nscd/wall plane 0 0 nan 0 0 1"), "fix nscd/wall: plane point z 'nan'"));
+  EXPECT_TRUE(has(error_of("fix p all nscd/plate 3 mass inf"), "fix nscd/plate: mass 'inf' is not a finite number"));
+  EXPECT_TRUE(has(error_of("shapes assign all shape 1 density nan"), "shapes assign: density 'nan'"));
+  EXPECT_TRUE(has(error_of("shapes random 2.5 seed 1"), "shapes random: count 2.5 must be a whole number"));
+}
+
+// Pushing overlapping grains apart faster than contacts are looked for ahead is refused,
+// naming the speed that fits (before: overlap_speed 1e6 ended in "Lost atoms").
+TEST_F(BadInputTest, OverlapSpeedBeyondTheLookAheadIsRefused)
+{
+  resting_cubes("fix solver all nscd overlap_speed 1e6");
+  const std::string message = error_of("run 1");
+  EXPECT_TRUE(has(message, "fix nscd: overlap_speed 1000000 separates overlapping grains by up to 1000 per step")) << message;
+  EXPECT_TRUE(has(message, "Use at most 519.6")) << message;    // (activation 0.0866 + reach 0.433) / 0.001
+  run("unfix solver");
+  run("fix solver all nscd overlap_speed 0.05");
+  EXPECT_EQ(error_of("run 1"), "");
+}
+
 TEST_F(BadInputTest, AnotherIntegratorOfTheGrainsIsRefused)
 {
   resting_cubes();
@@ -342,6 +374,17 @@ TEST_F(WireInputTest, AWireInsideAGrainAtTheStartOfARunIsWarnedAbout)
   commands({"delete_atoms group wire bond yes", "create_wire 2 line -3 0 1.019 3 0 1.019 bond 1 angle 1 mass 0.01",
             "group wire type 2"});
   EXPECT_FALSE(has(log_of({"run 0"}), "lies inside grain"));
+}
+
+// fix wire's numbers name the keyword (before: "Expected integer parameter instead of '2.5'").
+TEST_F(WireInputTest, FixWireNumbersNameTheKeyword)
+{
+  wire_box();
+  run("group wire type 2");
+  EXPECT_TRUE(has(error_of("fix w wire wire radius 0.02 k_n 200 substeps 2.5"), "fix wire: substeps 2.5 must be a whole number"));
+  EXPECT_TRUE(has(error_of("fix w wire wire radius nan"), "fix wire: radius 'nan' is not a finite number"));
+  EXPECT_TRUE(has(error_of("create_wire 2 loop 0 0 1 inf bond 1 mass 0.01 radius 0.02"), "create_wire loop: radius R 'inf' is not a finite number"));
+  EXPECT_TRUE(has(error_of("create_wire 2 line 0 0 1 1 0 1 bond 1 mass 0.01 radius 0.02 nodes 7.5"), "create_wire: nodes 7.5 must be a whole number"));
 }
 
 // create_wire's radius defaults to fix wire's (before: fix wire did not hand it over, and
