@@ -90,7 +90,13 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
   // is checked every 4 sweeps (it costs about a sweep); Nesterov momentum needs fewer
   // sweeps than plain Gauss-Seidel on every measured scene, at no communication cost
-  // (doc/nscd_solver.md, "Acceleration").
+  // (doc/nscd_solver.md, "Acceleration"); tolerance 1e-4 converged at every step of every
+  // benchmark scene at its usual timestep within 220 sweeps (doc/BENCHMARKS.md), so
+  // max_sweeps 1000 stops only steps that are going wrong, while 1e-6 left most loaded steps
+  // unconverged at several times the cost for no smaller overlap (doc/fix_nscd.md, "Speed
+  // against error").
+  solver->options.tolerance = 1e-4;
+  solver->options.max_sweeps = 1000;
   solver->options.theta = 1.0;
   solver->options.check_every = 4;
   solver->options.acceleration = nscd::Acceleration::nesterov;

@@ -42,6 +42,16 @@ void refuse_newer(std::int32_t format, std::int32_t newest, const char *what)
                   ", this build reads formats up to " + std::to_string(newest) + "; use a newer build");
 }
 
+// A timestep (or substep) as a run writes it: 0 (not known) or within 1e-100 .. 1e100. Stored
+// impulses and Gear states are rescaled by the ratio of the run's step to it, so a damaged
+// one (a denormal, say) would turn them into inf.
+void require_step(double dt, const std::string &what)
+{
+  if (!(dt == 0.0 || (dt >= 1e-100 && dt <= 1e100)))
+    throw Damaged(what + " is " + number(dt) + ", neither 0 (not known) nor a time step within 1e-100 .. 1e100: "
+                  "the block is damaged");
+}
+
 void require_finite(double x, const std::string &what)
 {
   if (!std::isfinite(x)) throw Damaged(what + " is " + number(x) + ", not a finite number: the block is damaged");
@@ -99,8 +109,7 @@ SolverBlock read_solver_block(const char *block, std::size_t available)
   in.limit_to_stated_size();
   const auto count = in.value<std::int64_t>("the record count");
   out.dt = in.value<double>("the timestep");
-  if (!(out.dt >= 0.0) || !std::isfinite(out.dt))
-    throw Damaged("the impulses' timestep is " + number(out.dt) + ", not a finite number >= 0: the block is damaged");
+  require_step(out.dt, "the impulses' timestep");
   out.records = in.records<nscd::ImpulseRecord>(count, "contact records");
   in.expect_end();
   for (std::size_t k = 0; k < out.records.size(); k++) check_impulse_record(out.records[k], k);
@@ -121,8 +130,7 @@ std::string wire_block(const WireBlock &state)
 namespace {
 void check_wire_step(double dt)
 {
-  if (!(dt >= 0.0) || !std::isfinite(dt))
-    throw Damaged("the Gear states' substep is " + number(dt) + ", not a finite number >= 0: the block is damaged");
+  require_step(dt, "the Gear states' substep");
 }
 }    // namespace
 

@@ -38,7 +38,7 @@ void expect_written_back(const std::string &written, const std::uint8_t *data, s
 inline void check(const SolverBlock &b, const std::uint8_t *data, std::size_t size)
 {
   if (!b.read) return;    // an older format: nothing read
-  if (!(b.dt >= 0.0) || !std::isfinite(b.dt)) violated("accepted timestep is not finite >= 0");
+  if (!(b.dt == 0.0 || (b.dt >= 1e-100 && b.dt <= 1e100))) violated("accepted timestep is neither 0 nor a usable step");
   for (const auto &r : b.records) {
     if (r.tag_i == 0 || r.tag_j == 0 || r.tag_i == r.tag_j) violated("accepted record joins impossible bodies");
     for (double x : r.impulse)
@@ -49,7 +49,7 @@ inline void check(const SolverBlock &b, const std::uint8_t *data, std::size_t si
 
 inline void check(const WireBlock &b, const std::uint8_t *data, std::size_t size)
 {
-  if (!(b.dt >= 0.0) || !std::isfinite(b.dt)) violated("accepted substep is not finite >= 0");
+  if (!(b.dt == 0.0 || (b.dt >= 1e-100 && b.dt <= 1e100))) violated("accepted substep is neither 0 nor a usable step");
   if (!b.memories_read) {
     if (!b.memories.empty()) violated("memories of an older format were kept");
     return;

@@ -64,7 +64,10 @@ class BadInputTest : public LammpsTest {
     run("log none");
     MPI_Barrier(MPI_COMM_WORLD);    // rank 0 writes the log: the others read it when it is closed
     std::ifstream in(log);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // and rank 0 truncates it in the next call only once every rank has read it
+    MPI_Barrier(MPI_COMM_WORLD);
+    return text;
   }
 };
 
@@ -539,6 +542,8 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
        {"fix nscd solver", "format 1000", "up to 3"}},
       {"fix nscd: format -7", [&](std::string &b) { put<std::int32_t>(b, solver + 4, -7); },
        {"fix nscd solver", "format number -7"}},
+      {"fix nscd: a denormal timestep", [&](std::string &b) { put<double>(b, solver + 24, 5e-315); },
+       {"fix nscd solver", "the impulses' timestep is 5.00000000228"}},
       {"fix nscd: a NaN impulse", [&](std::string &b) { put<double>(b, solver + 32 + 24, NAN); },
        {"fix nscd solver", "contact record 1's impulse is nan"}},
       {"fix nscd: a record of one body", [&](std::string &b) { put<std::int64_t>(b, solver + 32 + 8, get<std::int64_t>(b, solver + 32)); },
@@ -551,6 +556,8 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
        {"fix wire w", "format 4", "up to 3"}},
       {"fix wire: a NaN substep", [&](std::string &b) { put<double>(b, wire + 16, NAN); },
        {"fix wire w", "substep is nan"}},
+      {"fix wire: a denormal substep", [&](std::string &b) { put<double>(b, wire + 16, 5e-315); },
+       {"fix wire w", "substep is 5.00000000228"}},
       {"fix wire: a weight of 7", [&](std::string &b) { put<double>(b, wire + 32 + 32 + 64, 7.0); },
        {"fix wire w", "end weight 7"}},
       {"fix nscd/wall: foreign mark", [&](std::string &b) { put<std::int32_t>(b, wall, 12345); },
