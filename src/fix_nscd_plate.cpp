@@ -34,7 +34,7 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
 
   void append_contacts(std::vector<nscd::Contact> &, double activation, double dt) override;
   void take_impulses(const nscd::Contact *, int, double dt) override;
-  void warn_if_sinking(const nscd::Contact *first, int count);
+  void stop_if_sinking(const nscd::Contact *first, int count);
   void advance(double) override {}
   bool has_body() const override { return true; }
   nscd::SolverBody body(double dt) const override;
@@ -53,7 +53,6 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
   double elapsed = 0.0;
   double friction = 0.0, restitution = 0.0;
   double reaction = 0.0;                       // z force of the grains on the plate
-  bool warned_sinking = false;                 // this run
   int body_index = -1;
   std::int64_t tag;
   AtomVecSpheropolyhedron *avec = nullptr;
@@ -125,7 +124,6 @@ void FixNSCDPlate::init()
 
 void FixNSCDPlate::setup(int /*vflag*/)
 {
-  plate->warned_sinking = false;
   const double z = plate->z;
   tagint first_above = MAXTAGINT, any_above;
   for (int i = 0; i < atom->nlocal; i++)
@@ -194,32 +192,30 @@ void FixNSCDPlate::Plate::take_impulses(const nscd::Contact *first, int count, d
   for (int k = 0; k < count; k++) mine -= first[k].impulse.z();    // on the plate
   mine /= dt;
   MPI_Allreduce(&mine, &reaction, 1, MPI_DOUBLE, MPI_SUM, fix.world);
-  warn_if_sinking(first, count);
+  stop_if_sinking(first, count);
 }
 
 /* Under a load far beyond what the scene can take in a step (a huge 'rate'), the plate
    sinks into the grains: its load drives it past its contacts within one step (they are
    activated from its velocity at the start of the step), and the solver's relative
    tolerance leaves impulse errors that let it sink step after step, without an unconverged
-   step. Warned once per run when the plate's deepest contact at the start of a step goes
-   past a fifth of the grain's bounding radius (the depth at which fix nscd warns about
-   grains inside grains). */
-void FixNSCDPlate::Plate::warn_if_sinking(const nscd::Contact *first, int count)
+   step. The run stops when the plate's deepest contact at the start of a step goes past a
+   fifth of the grain's bounding radius (the depth at which fix nscd warns about grains
+   inside grains): from there on the scene is not the one asked for (at 1e12 the plate went
+   through the grains and the run ended in "Lost atoms"). */
+void FixNSCDPlate::Plate::stop_if_sinking(const nscd::Contact *first, int count)
 {
-  if (warned_sinking) return;
   double mine = 0.0;    // depth / bounding radius
   for (int k = 0; k < count; k++)
     mine = std::max(mine, -first[k].gap / avec->radius[first[k].body_i]);
   double worst = 0.0;
   MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE, MPI_MAX, fix.world);
   if (!(worst > 0.2)) return;
-  warned_sinking = true;
-  if (fix.comm->me == 0)
-    fix.error->warning(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding radius deep in "
-                       "the grains (velocity {:.4g}) under a load of {:.6g} (load {:.6g} + rate {:.6g} x time {:.6g}): "
-                       "a load this large drives it past its contacts within a step, or further than the solver's "
-                       "relative tolerance holds it. Lower the load or its rate, or the timestep", fix.id,
-                       fix.update->ntimestep, worst, vz, load(), load_start, load_rate, elapsed);
+  fix.error->all(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding radius deep in the "
+                 "grains (velocity {:.4g}) under a load of {:.6g} (load {:.6g} + rate {:.6g} x time {:.6g}): a load "
+                 "this large drives it past its contacts within a step, or further than the solver's relative "
+                 "tolerance holds it. Lower the load or its rate, or the timestep", fix.id, fix.update->ntimestep,
+                 worst, vz, load(), load_start, load_rate, elapsed);
 }
 
 double FixNSCDPlate::compute_vector(int n)
