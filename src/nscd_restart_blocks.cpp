@@ -35,11 +35,16 @@ std::string with_header(std::int32_t format, const std::string &payload)
   return sized_header(format, payload.size()) + payload;
 }
 
-void refuse_newer(std::int32_t format, std::int32_t newest, const char *what)
+// The block's format from its mark, refused if newer than this build's; from `sized_since`
+// on, the reader is limited to the size the block states.
+std::int32_t open_block(BlockReader &in, std::int32_t newest, std::int32_t sized_since, const char *what)
 {
+  const std::int32_t format = in.version();
   if (format > newest)
     throw Damaged(std::string("the block holds ") + what + " in format " + std::to_string(format) +
                   ", this build reads formats up to " + std::to_string(newest) + "; use a newer build");
+  if (format >= sized_since) in.limit_to_stated_size();
+  return format;
 }
 
 // A timestep (or substep) as a run writes it: 0 (not known) or within 1e-100 .. 1e100. Stored
@@ -100,13 +105,11 @@ SolverBlock read_solver_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   SolverBlock out;
-  out.format = in.version();
-  refuse_newer(out.format, kSolverFormat, "the contacts' impulses");
+  out.format = open_block(in, kSolverFormat, 3, "the contacts' impulses");
   if (out.format < 3) {    // no size: the stored count cannot be checked
     out.read = false;
     return out;
   }
-  in.limit_to_stated_size();
   const auto count = in.value<std::int64_t>("the record count");
   out.dt = in.value<double>("the timestep");
   require_step(out.dt, "the impulses' timestep");
@@ -148,11 +151,9 @@ WireBlock read_wire_block(const char *block, std::size_t available)
     }
   }
   BlockReader in(block, available);
-  out.format = in.version();
-  refuse_newer(out.format, kWireFormat, "the wire's state");
+  out.format = open_block(in, kWireFormat, 3, "the wire's state");
   if (out.format < 3)    // formats 1 and 2 had no mark: this one is not ours
     throw Damaged("format " + std::to_string(out.format) + " of fix wire never had this mark: the block is damaged");
-  in.limit_to_stated_size();
   out.dt = in.value<double>("the substep");
   check_wire_step(out.dt);
   const auto count = in.value<std::int64_t>("the memory count");
@@ -176,9 +177,7 @@ WallBlock read_wall_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   WallBlock out;
-  out.format = in.version();
-  refuse_newer(out.format, kWallFormat, "the wall");
-  if (out.format >= 2) in.limit_to_stated_size();
+  out.format = open_block(in, kWallFormat, 2, "the wall");
   const double kind = in.value<double>("the wall's kind");
   if ((kind != 0.0 && kind != 1.0) || std::signbit(kind))    // exactly as written (not -0)
     throw Damaged("the wall's kind is " + number(kind) + " (0 for a plane, 1 for a cylinder): the block is damaged");
@@ -204,9 +203,7 @@ PlateBlock read_plate_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   PlateBlock out;
-  out.format = in.version();
-  refuse_newer(out.format, kPlateFormat, "the plate");
-  if (out.format >= 2) in.limit_to_stated_size();
+  out.format = open_block(in, kPlateFormat, 2, "the plate");
   const char *names[4] = {"the plate's z", "the plate's velocity", "the plate's loading time", "the plate's first z"};
   double *values[4] = {&out.z, &out.vz, &out.elapsed, &out.z_start};
   for (int k = 0; k < 4; k++) {

@@ -45,6 +45,8 @@ for target in $targets; do
   dict=()
   [ "$target" = shape_text ] && dict=(-dict="$here/tests/fuzz/shape_text.dict")
   echo "== fuzz_$target for $seconds s (corpus $corpus)"
+  stamp=$build/fuzz-$target.start
+  touch "$stamp"
   # One process (libFuzzer's default: one job, one worker), niced: the machine is shared.
   if ! nice -n 10 "$build/tests/fuzz/fuzz_$target" "$corpus" "$seeds/$target" "${dict[@]}" \
       -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
@@ -52,8 +54,9 @@ for target in $targets; do
     status=1
   fi
   grep -E "^#[0-9]+ +DONE|stat::number_of_executed_units|SUMMARY|property violated|ERROR" "$build/fuzz-$target.log" || true
-  crashes=$(find "$artifacts" -type f | wc -l)
-  echo "fuzz_$target: $crashes crash/timeout input(s) in $artifacts (log $build/fuzz-$target.log)"
+  # only what this run found (older finds stay until copied to tests/fuzz/regressions)
+  crashes=$(find "$artifacts" -type f -newer "$stamp" | wc -l)
+  echo "fuzz_$target: $crashes new crash/timeout input(s) in $artifacts (log $build/fuzz-$target.log)"
   [ "$crashes" -eq 0 ] || status=1
 done
 exit $status

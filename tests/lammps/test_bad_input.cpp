@@ -471,9 +471,8 @@ class RestartDamageTest : public BadInputTest {
     return value;
   }
 
-  // The message of reading back the file damaged by `damage` (run on rank 0), then
-  // redefining every fix; "" if all went through.
-  std::string error_after(const std::function<void(std::string &)> &damage)
+  // The file damaged by `damage` (run on rank 0), in a new LAMMPS instance: its path.
+  std::string damaged_file(const std::function<void(std::string &)> &damage)
   {
     if (rank() == 0) {
       std::string bytes = original;
@@ -482,20 +481,19 @@ class RestartDamageTest : public BadInputTest {
     }
     MPI_Barrier(MPI_COMM_WORLD);
     restart_instance();
-    std::string message = error_of("read_restart " + scratch("damaged.restart"));
+    return scratch("damaged.restart");
+  }
+  // The message of reading the damaged file back, then redefining every fix; "" if all went through.
+  std::string error_after(const std::function<void(std::string &)> &damage)
+  {
+    std::string message = error_of("read_restart " + damaged_file(damage));
     for (size_t k = 0; k < fixes.size() && message.empty(); k++) message = error_of(fixes[k]);
     return message;
   }
+  // The log of the same, which must go through.
   std::string log_after(const std::function<void(std::string &)> &damage)
   {
-    if (rank() == 0) {
-      std::string bytes = original;
-      damage(bytes);
-      std::ofstream(scratch("damaged.restart"), std::ios::binary) << bytes;
-    }
-    MPI_Barrier(MPI_COMM_WORLD);
-    restart_instance();
-    run("read_restart " + scratch("damaged.restart"));
+    run("read_restart " + damaged_file(damage));
     return log_of(fixes);
   }
 };
