@@ -1,6 +1,7 @@
 /* angle_style wire: LAMMPS glue around nscd::wire::bending_node_forces. */
 
 #include "angle_wire.h"
+#include "nscd_args.h"
 #include "nscd_arrays.h"
 
 #include "wire/elastic_forces.h"
@@ -81,7 +82,7 @@ void AngleWire::coeff(int narg, char **arg)
   if (!allocated) allocate();
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
-  const double k = utils::numeric(FLERR, arg[1], false, lmp);
+  const double k = nscd_args::number(lmp, "angle_coeff wire", "k_rot", arg[1]);
   if (!(k >= 0.0) || !std::isfinite(k))
     error->all(FLERR, "angle_coeff wire: k_rot = {} must be a finite moment >= 0 (k_rot = EI / l)", k);
   for (int i = ilo; i <= ihi; i++) {
@@ -107,7 +108,13 @@ void AngleWire::read_restart(FILE *fp)
   const int n = atom->nangletypes;
   if (comm->me == 0) utils::sfread(FLERR, &stiffness[1], sizeof(double), n, fp, nullptr, error);
   MPI_Bcast(&stiffness[1], n, MPI_DOUBLE, 0, world);
-  for (int i = 1; i <= n; i++) setflag[i] = 1;
+  for (int i = 1; i <= n; i++) {
+    if (!(stiffness[i] >= 0.0) || !std::isfinite(stiffness[i]))
+      error->all(FLERR, "angle_style wire: the restart file's k_rot = {} of angle type {} is damaged (a finite "
+                 "moment >= 0 was written); write the restart again, or give it with angle_coeff after a data "
+                 "file", stiffness[i], i);
+    setflag[i] = 1;
+  }
 }
 
 void AngleWire::write_data(FILE *fp)

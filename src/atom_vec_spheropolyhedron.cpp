@@ -8,6 +8,7 @@
 #include "memory.h"
 #include "nscd_arrays.h"
 
+#include "shape/grain_record.h"
 #include "shape/shape_library.h"
 
 #include <cmath>
@@ -108,23 +109,41 @@ void AtomVecSpheropolyhedron::create_atom_post(int i)
   set_shape(i, 0, 1.0);
 }
 
+/* An Atoms line's shape id, mass and orientation, checked (lib/shape/grain_record.h); the
+   quaternion is normalised, inertia and radius come from the shape. */
 void AtomVecSpheropolyhedron::data_atom_post(int i)
 {
-  check_shape_id(i);
-  if (!(rmass[i] > 0.0) || !std::isfinite(rmass[i]))
-    error->one(FLERR, "Atoms section: atom ID {} has mass {}; the mass must be positive",
-               atom->tag[i], rmass[i]);
-  double norm = 0.0;
-  for (int k = 0; k < 4; k++) norm += quat[i][k] * quat[i][k];
-  norm = std::sqrt(norm);
-  if (!(norm > 1e-10) || !std::isfinite(norm))
-    error->one(FLERR, "Atoms section: atom ID {} has quaternion ({} {} {} {}) of zero length; "
-               "use 1 0 0 0 for no rotation", atom->tag[i], quat[i][0], quat[i][1], quat[i][2],
-               quat[i][3]);
-  for (int k = 0; k < 4; k++) quat[i][k] /= norm;
+  nscd::CheckedGrain grain;
+  try {
+    grain = nscd::check_grain_record(*library, {shape[i], rmass[i], {quat[i][0], quat[i][1], quat[i][2], quat[i][3]}},
+                                     nscd::QuaternionLength::any);
+  } catch (std::exception &e) {
+    error->one(FLERR, "Atoms section: atom ID {}: {}", atom->tag[i], e.what());
+  }
+  for (int k = 0; k < 4; k++) quat[i][k] = grain.quat[k];
   set_shape(i, shape[i], rmass[i]);
   omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
   torque[i][0] = torque[i][1] = torque[i][2] = 0.0;
+}
+
+/* An atom just read from a restart file: its shape id, mass and orientation as a data file's
+   must be, its stored inertia, radius and angular velocity finite. A damaged file is
+   refused here rather than indexing the library with a wrong id later. */
+void AtomVecSpheropolyhedron::unpack_restart_init(int i)
+{
+  try {
+    nscd::check_grain_record(*library, {shape[i], rmass[i], {quat[i][0], quat[i][1], quat[i][2], quat[i][3]}},
+                             nscd::QuaternionLength::unit);
+  } catch (std::exception &e) {
+    error->one(FLERR, "read_restart: atom ID {}: {}; the restart file is damaged", atom->tag[i], e.what());
+  }
+  const double stored[7] = {inertia[i][0], inertia[i][1], inertia[i][2], radius[i], omega[i][0], omega[i][1], omega[i][2]};
+  const char *names[7] = {"inertia", "inertia", "inertia", "radius", "angular velocity", "angular velocity",
+                          "angular velocity"};
+  for (int k = 0; k < 7; k++)
+    if (!std::isfinite(stored[k]) || (k < 4 && stored[k] < 0.0))
+      error->one(FLERR, "read_restart: atom ID {} has {} {}; the restart file is damaged", atom->tag[i], names[k],
+                 stored[k]);
 }
 
 void AtomVecSpheropolyhedron::check_shape_id(int i) const

@@ -1,6 +1,7 @@
 /* bond_style wire: LAMMPS glue around nscd::wire::axial_element_forces. */
 
 #include "bond_wire.h"
+#include "nscd_args.h"
 #include "nscd_arrays.h"
 
 #include "wire/elastic_forces.h"
@@ -14,9 +15,19 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 
+namespace {
+// What bond_coeff and the restart reader both refuse ("" if the values are fine).
+std::string problem_of(double stiffness, double rest)
+{
+  if (!(stiffness >= 0.0) || !std::isfinite(stiffness)) return fmt::format("k_elo = {} must be a finite force >= 0", stiffness);
+  if (!(rest > 0.0) || !std::isfinite(rest)) return fmt::format("rest length r0 = {} must be > 0", rest);
+  return "";
+}
+}    // namespace
 
 BondWire::BondWire(LAMMPS *lmp) : Bond(lmp) {}
 
@@ -87,12 +98,10 @@ void BondWire::coeff(int narg, char **arg)
   if (!allocated) allocate();
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double stiffness = utils::numeric(FLERR, arg[1], false, lmp);
-  const double rest = utils::numeric(FLERR, arg[2], false, lmp);
-  if (!(stiffness >= 0.0) || !std::isfinite(stiffness))
-    error->all(FLERR, "bond_coeff wire: k_elo = {} must be a finite force >= 0", stiffness);
-  if (!(rest > 0.0) || !std::isfinite(rest))
-    error->all(FLERR, "bond_coeff wire: rest length r0 = {} must be > 0", rest);
+  const double stiffness = nscd_args::number(lmp, "bond_coeff wire", "k_elo", arg[1]);
+  const double rest = nscd_args::number(lmp, "bond_coeff wire", "rest length r0", arg[2]);
+  const std::string problem = problem_of(stiffness, rest);
+  if (!problem.empty()) error->all(FLERR, "bond_coeff wire: {}", problem);
   bool string = false;
   if (narg == 5) {
     if (strcmp(arg[3], "string") != 0)
@@ -132,6 +141,12 @@ void BondWire::read_restart(FILE *fp)
   if (comm->me == 0) utils::sfread(FLERR, rows.data(), sizeof(double), 3 * n, fp, nullptr, error);
   MPI_Bcast(rows.data(), 3 * n, MPI_DOUBLE, 0, world);
   for (int i = 1; i <= n; i++) {
+    const double *row = &rows[3 * (i - 1)];
+    const std::string problem = problem_of(row[0], row[1]);
+    if (!problem.empty() || (row[2] != 0.0 && row[2] != 1.0))
+      error->all(FLERR, "bond_style wire: the restart file's coefficients of bond type {} are damaged ({}); "
+                 "write the restart again, or give them with bond_coeff after a data file", i,
+                 problem.empty() ? fmt::format("string flag {}", row[2]) : problem);
     k_elo[i] = rows[3 * (i - 1)];
     r0[i] = rows[3 * (i - 1) + 1];
     is_string[i] = rows[3 * (i - 1) + 2] != 0.0;

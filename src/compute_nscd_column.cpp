@@ -2,6 +2,7 @@
    extent); reduced over the ranks into the column's height and retained fraction. */
 
 #include "compute_nscd_column.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -28,16 +29,16 @@ ComputeNSCDColumn::ComputeNSCDColumn(LAMMPS *lmp, int narg, char **arg) : Comput
   if (narg < 6)
     error->all(FLERR, "Illegal compute nscd/column command: expected 'compute ID group nscd/column "
                "X Y R [floor Z] [percentile P]'");
-  axis_x = utils::numeric(FLERR, arg[3], false, lmp);
-  axis_y = utils::numeric(FLERR, arg[4], false, lmp);
-  radius = utils::numeric(FLERR, arg[5], false, lmp);
+  axis_x = nscd_args::number(lmp, "compute nscd/column", "axis X", arg[3]);
+  axis_y = nscd_args::number(lmp, "compute nscd/column", "axis Y", arg[4]);
+  radius = nscd_args::number(lmp, "compute nscd/column", "radius", arg[5]);
   if (!(radius > 0.0) || !std::isfinite(radius) || !std::isfinite(axis_x) || !std::isfinite(axis_y))
     error->all(FLERR, "compute nscd/column: the axis ({}, {}) must be finite and the radius {} positive",
                arg[3], arg[4], arg[5]);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "compute nscd/column: keyword '{}' needs a value", key);
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value = nscd_args::number(lmp, "compute nscd/column", key, arg[iarg + 1]);
     if (key == "floor") {
       if (!std::isfinite(value)) error->all(FLERR, "compute nscd/column: floor {} must be finite", arg[iarg + 1]);
       floor_z = value;

@@ -36,6 +36,12 @@ void ComputeWireContacts::init()
   for (Fix *f : modify->get_fix_list())
     if (auto *w = dynamic_cast<FixWire *>(f)) fix = w;
   if (!fix) error->all(FLERR, "compute wire/contacts needs fix wire (it reports that fix's contacts)");
+  int dim = 0;
+  const auto *k_n = static_cast<const double *>(fix->extract("k_n", dim));
+  if (!k_n || !(*k_n > 0.0))
+    error->all(FLERR, "compute wire/contacts {}: fix wire {} has no contacts (k_n {}), so there is nothing to "
+               "report; give fix wire a contact stiffness 'k_n K' (and 'radius R'), or drop the compute", id,
+               fix->id, k_n ? *k_n : 0.0);
   fix->record_contacts();
 }
 

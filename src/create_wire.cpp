@@ -3,6 +3,7 @@
    their positions and the bonds and angles on the nodes that store them. */
 
 #include "create_wire.h"
+#include "nscd_args.h"
 
 #include "angle.h"
 #include "atom.h"
@@ -21,15 +22,18 @@
 #include "special.h"
 
 #include "geometry/contact.h"
-#include "geometry/point_grid.h"
 #include "shape/shape_library.h"
+#include "nscd_gather.h"
+#include "wire/wire_overlap.h"
 #include "wire/wire_path.h"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace LAMMPS_NS;
@@ -87,7 +91,10 @@ void CreateWire::command(int narg, char **arg)
   check_types();
   lay_out();
   check_nodes_in_box();
-  if (request->check_overlap) check_overlaps();
+  if (request->check_overlap) {
+    check_overlaps();
+    check_wire_overlaps();
+  }
   create_nodes();
   create_bonds_and_angles();
   Special special(lmp);
@@ -124,24 +131,29 @@ void CreateWire::parse(int narg, char **arg)
   const char *usage = "expected 'create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 "
                       "Z1 X2 Y2 Z2 | polyline FILE, then bond BTYPE mass M [angle ATYPE] ...'";
   if (narg < 3) error->all(FLERR, "Illegal create_wire command: {}", usage);
-  r.node_type = utils::inumeric(FLERR, arg[0], false, lmp);
+  r.node_type = (int) nscd_args::whole(lmp, "create_wire", "atom type", arg[0], INT_MIN, INT_MAX);
   if (r.node_type < 1 || r.node_type > atom->ntypes)
     error->all(FLERR, "create_wire: atom type {} is not between 1 and {}", r.node_type, atom->ntypes);
   r.shape_name = arg[1];
-  auto number = [&](int i) { return utils::numeric(FLERR, arg[i], false, lmp); };
-  auto point = [&](int i) { return nscd::Vec3(number(i), number(i + 1), number(i + 2)); };
+  // a number of the path (named by its place in the usage) or of a keyword (named by it)
+  auto number = [&](int i, const std::string &what = "") {
+    return nscd_args::number(lmp, "create_wire " + r.shape_name, what.empty() ? arg[i - 1] : what, arg[i]);
+  };
+  auto point = [&](int i, const std::string &what) {
+    return nscd::Vec3(number(i, what + " x"), number(i + 1, what + " y"), number(i + 2, what + " z"));
+  };
   int iarg;
   if (r.shape_name == "loop" || r.shape_name == "helix") {
     const int args = r.shape_name == "loop" ? 4 : 5;
     if (narg < 2 + args) error->all(FLERR, "Illegal create_wire {} command: {}", r.shape_name, usage);
-    r.loop.centre = point(2);
-    r.loop.radius = number(5);
-    if (r.shape_name == "helix") r.loop.pitch = number(6);
+    r.loop.centre = point(2, "centre");
+    r.loop.radius = number(5, "radius R");
+    if (r.shape_name == "helix") r.loop.pitch = number(6, "pitch");
     iarg = 2 + args;
   } else if (r.shape_name == "line") {
     if (narg < 8) error->all(FLERR, "Illegal create_wire line command: {}", usage);
     r.shape = Request::Shape::polyline;
-    r.polyline.points = {point(2), point(5)};
+    r.polyline.points = {point(2, "start"), point(5, "end")};
     iarg = 8;
   } else if (r.shape_name == "polyline") {
     r.shape = Request::Shape::polyline;
@@ -156,18 +168,10 @@ void CreateWire::parse(int narg, char **arg)
     broadcast(problem);
     if (!problem.empty()) error->all(FLERR, "create_wire: {}", problem);
     broadcast(text);
-    std::istringstream lines(text);
-    std::string line;
-    for (int number_of_line = 1; std::getline(lines, line); number_of_line++) {
-      line = line.substr(0, line.find('#'));
-      std::istringstream words(line);
-      double x, y, z;
-      std::string extra;
-      if (!(words >> x)) continue;    // blank or comment
-      if (!(words >> y >> z) || (words >> extra))
-        error->all(FLERR, "create_wire: {}:{}: expected three numbers 'x y z', got '{}'", arg[2],
-                   number_of_line, line);
-      r.polyline.points.emplace_back(x, y, z);
+    try {
+      r.polyline = nscd::wire::read_polyline(text, arg[2]);
+    } catch (std::exception &e) {
+      error->all(FLERR, "create_wire: {}", e.what());
     }
     iarg = 3;
   } else {
@@ -184,11 +188,11 @@ void CreateWire::parse(int narg, char **arg)
       error->all(FLERR, "create_wire: '{}' applies to a loop or helix, not a {}", key, r.shape_name);
     if (key == "bond") {
       need(1);
-      r.bond_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      r.bond_type = (int) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "angle") {
       need(1);
-      r.angle_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      r.angle_type = (int) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "mass") {
       need(1);
@@ -214,19 +218,18 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 2;
     } else if (key == "axis") {
       need(3);
-      r.loop.axis = point(iarg + 1);
+      r.loop.axis = point(iarg + 1, "axis");
       iarg += 4;
     } else if (key == "nodes") {
       need(1);
-      const bigint n = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
+      const bigint n = nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1]);
       if (n < 2 || n > 100000000)
         error->all(FLERR, "create_wire: nodes {} must be between 2 and 100000000", n);
       r.nodes = (int) n;
       iarg += 2;
     } else if (key == "mol") {
       need(1);
-      r.molecule = utils::tnumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (r.molecule < 1) error->all(FLERR, "create_wire: molecule ID {} must be >= 1", r.molecule);
+      r.molecule = (tagint) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
       iarg += 2;
     } else if (key == "radius") {
       need(1);
@@ -352,46 +355,46 @@ void CreateWire::check_nodes_in_box()
   }
 }
 
-/* The wire must not start inside grains or walls: each rank tests its own grains against
-   the elements near them (nearest periodic image), every rank the walls against the node
+/* The periodic translations of the box that can bring one part of the new wire onto
+   another, onto a wire already there or onto a grain: every lattice vector up to the new wire's extent
+   (in box lengths, plus one) in each periodic direction. */
+static std::vector<nscd::Vec3> periodic_shifts(const Domain *domain, const std::vector<nscd::Vec3> &nodes)
+{
+  const nscd::Vec3 edges[3] = {nscd::Vec3(domain->xprd, 0.0, 0.0), nscd::Vec3(domain->xy, domain->yprd, 0.0),
+                               nscd::Vec3(domain->xz, domain->yz, domain->zprd)};
+  int reach[3] = {0, 0, 0};
+  for (int d = 0; d < 3; d++) {
+    if (!domain->periodicity[d]) continue;
+    double farthest = 0.0;
+    for (const nscd::Vec3 &x : nodes) farthest = std::max(farthest, std::abs(x[d] - 0.5 * (domain->boxlo[d] + domain->boxhi[d])));
+    reach[d] = (int) std::ceil(farthest / domain->prd[d]) + 1;
+  }
+  std::vector<nscd::Vec3> shifts;
+  for (int i = -reach[0]; i <= reach[0]; i++)
+    for (int j = -reach[1]; j <= reach[1]; j++)
+      for (int k = -reach[2]; k <= reach[2]; k++)
+        if (i || j || k) shifts.push_back(i * edges[0] + j * edges[1] + k * edges[2]);
+  return shifts;
+}
+
+/* The wire must not start inside grains or walls: each rank tests its own grains (and their
+   periodic images) against the elements near them, every rank the walls against the node
    spheres; the deepest overlap beyond the tolerance stops the command, named. */
 void CreateWire::check_overlaps()
 {
   Request &r = *request;
   auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
-  const auto &elements = r.layout.topology.elements;
-  std::vector<nscd::Vec3> middles;
-  for (const auto &e : elements) middles.push_back(0.5 * (r.layout.nodes[e.a] + r.layout.nodes[e.b]));
-  nscd::PointGrid grid;
-  grid.build(middles, std::max(r.layout.chord, 2.0 * r.radius));
   const double allowed = r.overlap * r.radius;
-
-  double worst[2] = {-1.0, 0.0};    // overlap depth, grain ID
-  nscd::ContactWorkspace workspace;
+  std::vector<nscd::wire::PlacedGrain> grains;
+  std::vector<tagint> grain_tags;
   for (int i = 0; i < atom->nlocal; i++) {
     if (avec->shape[i] == 0) continue;
-    const nscd::Pose pose = avec->pose(i);
-    const double reach = avec->radius[i] + 0.5 * r.layout.chord + r.radius;
-    for (int shift = 0; shift < 27; shift++) {    // periodic images of the grain
-      nscd::Vec3 offset = nscd::Vec3::Zero();
-      bool skip = false;
-      for (int d = 0, code = shift; d < 3; d++, code /= 3) {
-        const int image = code % 3 - 1;
-        if (image != 0 && !domain->periodicity[d]) skip = true;
-        offset[d] = image * domain->prd[d];
-      }
-      if (skip) continue;
-      nscd::Pose shifted = pose;
-      shifted.position += offset;
-      grid.for_each_near(shifted.position, reach, [&](int e) {
-        const nscd::Segment segment{r.layout.nodes[elements[e].a], r.layout.nodes[elements[e].b], r.radius};
-        const nscd::SegmentGrainContact contact =
-            nscd::contact_segment_grain(segment, avec->shape_of(i), shifted, 0.0, workspace);
-        for (const nscd::SegmentContact &p : contact)
-          if (-p.gap > worst[0]) worst[0] = -p.gap, worst[1] = (double) atom->tag[i];
-      });
-    }
+    grains.push_back({&avec->shape_of(i), avec->pose(i)});
+    grain_tags.push_back(atom->tag[i]);
   }
+  const nscd::wire::ElementOverlap o = nscd::wire::deepest_overlap_with_grains(
+      {r.layout.nodes, r.layout.topology.elements}, r.radius, grains, periodic_shifts(domain, r.layout.nodes));
+  double worst[2] = {o.b >= 0 ? o.depth : -1.0, o.b >= 0 ? (double) grain_tags[o.b] : 0.0};    // depth, grain ID
   double deepest[2];
   MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
   if (deepest[0] > allowed)
@@ -410,6 +413,69 @@ void CreateWire::check_overlaps()
                    r.shape_name, k + 1, fix->id, -p.gap, allowed);
     }
   }
+}
+
+/* The new wire must not lie on itself (turns of a helix closer than its diameter, a loop
+   reaching its own periodic image) nor on a wire already there: elements as
+   spherocylinders of the wire radius, the pairs the contact model would see
+   (lib/wire/wire_overlap.h), overlapping by more than the tolerance stop the command. The
+   existing wires' elements are gathered on every rank (a setup command). */
+void CreateWire::check_wire_overlaps()
+{
+  namespace wire = nscd::wire;
+  const Request &r = *request;
+  const double allowed = r.overlap * r.radius;
+  const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, r.layout.nodes);
+  const wire::WirePieces mine{r.layout.nodes, r.layout.topology.elements};
+  const wire::ElementOverlap self = wire::deepest_overlap_within(mine, r.radius, shifts);
+  if (self.depth > allowed) {
+    const auto &ea = r.layout.topology.elements[self.a], &eb = r.layout.topology.elements[self.b];
+    std::string why = "lay it elsewhere, raise 'overlap', or use 'overlap ignore'";
+    if (self.shift.squaredNorm() > 0.0)
+      why = fmt::format("the wire reaches its own periodic image, ({:.6g}, {:.6g}, {:.6g}) away: make it smaller "
+                        "than the periodic box or the box larger", self.shift.x(), self.shift.y(), self.shift.z());
+    else if (r.shape == Request::Shape::loop && r.loop.turns > 1.0 && std::abs(r.loop.pitch) < 2.0 * r.radius)
+      why = fmt::format("the pitch {:.6g} is below the wire's diameter {:.6g}, so its turns lie on each other: give "
+                        "a pitch of at least {:.6g}", r.loop.pitch, 2.0 * r.radius, 2.0 * r.radius);
+    error->all(FLERR, "create_wire {}: the new wire overlaps itself by {:.4g} (allowed: {:.4g}, {} x the wire "
+               "radius) between its elements {}-{} and {}-{} (node numbers along the path); {}", r.shape_name,
+               self.depth, allowed, r.overlap, ea.a + 1, ea.b + 1, eb.a + 1, eb.b + 1, why);
+  }
+
+  // The wires already there: their nodes and bonds from every rank, each element with its
+  // second node at the image nearest to its first.
+  struct Node {
+    tagint tag;
+    double x[3];
+  };
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  std::vector<Node> my_nodes;
+  std::vector<std::array<tagint, 2>> my_bonds;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (avec->shape[i] != 0) continue;
+    my_nodes.push_back({atom->tag[i], {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
+    for (int m = 0; m < atom->num_bond[i]; m++) my_bonds.push_back({atom->tag[i], atom->bond_atom[i][m]});
+  }
+  std::map<tagint, nscd::Vec3> where;
+  for (const Node &n : gather_records(my_nodes, world, true)) where[n.tag] = vec3(n.x);
+  std::vector<std::array<tagint, 2>> bonds;
+  wire::WirePieces existing;
+  for (const auto &b : gather_records(my_bonds, world, true)) {
+    const auto p = where.find(b[0]), q = where.find(b[1]);
+    if (p == where.end() || q == where.end()) continue;    // a bond to a grain: not a wire element
+    double delta[3] = {q->second.x() - p->second.x(), q->second.y() - p->second.y(), q->second.z() - p->second.z()};
+    domain->minimum_image(delta);
+    const int first = (int) existing.nodes.size();
+    existing.nodes.push_back(p->second);
+    existing.nodes.push_back(p->second + vec3(delta));
+    existing.elements.push_back({first, first + 1, 0.0});
+    bonds.push_back(b);
+  }
+  const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing, r.radius, shifts);
+  if (other.depth > allowed)
+    error->all(FLERR, "create_wire {}: the new wire overlaps the wire element between atoms ID {} and {} by {:.4g} "
+               "(allowed: {:.4g}, {} x the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
+               r.shape_name, bonds[other.b][0], bonds[other.b][1], other.depth, allowed, r.overlap);
 }
 
 /* Each rank creates the nodes whose positions lie in its sub-domain, with consecutive new

@@ -33,6 +33,7 @@ class CreateWire : public Command {
   void lay_out();
   void check_nodes_in_box();
   void check_overlaps();
+  void check_wire_overlaps();
   void create_nodes();
   void create_bonds_and_angles();
   void broadcast(std::string &text);    // from rank 0 to all

@@ -2,6 +2,7 @@
    ghost exchanges between sweeps, and moves the grains (Moreau-Jean). */
 
 #include "fix_nscd.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -14,7 +15,7 @@
 #include "modify.h"
 #include "nscd_arrays.h"
 #include "nscd_gather.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 #include "nscd_timing.h"
 #include "neighbor.h"
 #include "nscd_boundary.h"
@@ -45,11 +46,6 @@ enum Diagnostic {
   KE_TRANSLATION, KE_ROTATION, NDIAGNOSTICS
 };
 
-// Restart files hold ImpulseRecords as raw bytes: their layout is the file format. Version 1:
-// the record count, then the records; version 2: the count, the timestep the impulses were
-// solved with (0: unknown), then the records.
-constexpr int kRestartVersion = 2;
-
 // Cell size of the coarse correction (nscd::SolverOptions::coarse_cell) in grain sizes:
 // "no" = off, "yes" = 2 (the size measured best, doc/nscd_solver.md), or a number > 0.
 double coarse_cell_of(const std::string &value, LAMMPS *lmp)
@@ -63,7 +59,6 @@ double coarse_cell_of(const std::string &value, LAMMPS *lmp)
                     "sizes)", value);
   return cell;
 }
-static_assert(sizeof(nscd::ImpulseRecord) == 48, "restart record layout changed");
 }    // namespace
 
 struct FixNSCD::Solver {
@@ -107,7 +102,13 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
   // is checked every 4 sweeps (it costs about a sweep); Nesterov momentum needs fewer
   // sweeps than plain Gauss-Seidel on every measured scene, at no communication cost
-  // (doc/nscd_solver.md, "Acceleration").
+  // (doc/nscd_solver.md, "Acceleration"); tolerance 1e-4 converged at every step of every
+  // benchmark scene at its usual timestep within 220 sweeps (doc/BENCHMARKS.md), so
+  // max_sweeps 1000 stops only steps that are going wrong, while 1e-6 left most loaded steps
+  // unconverged at several times the cost for no smaller overlap (doc/fix_nscd.md, "Speed
+  // against error").
+  solver->options.tolerance = 1e-4;
+  solver->options.max_sweeps = 1000;
   solver->options.theta = 1.0;
   solver->options.check_every = 4;
   solver->options.acceleration = nscd::Acceleration::nesterov;
@@ -115,15 +116,15 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
     const char *value = arg[iarg + 1];
-    if (key == "theta") solver->options.theta = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "tolerance") solver->options.tolerance = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "max_sweeps") solver->options.max_sweeps = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "relaxation") solver->options.relaxation = utils::numeric(FLERR, value, false, lmp);
-    else if (key == "seed") solver->options.seed = (std::uint64_t) utils::bnumeric(FLERR, value, false, lmp);
-    else if (key == "exchange") exchange_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "check") solver->options.check_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "warn") warn_every = utils::inumeric(FLERR, value, false, lmp);
-    else if (key == "overlap_speed") solver->options.overlap_speed = utils::numeric(FLERR, value, false, lmp);
+    if (key == "theta") solver->options.theta = nscd_args::number(lmp, "fix nscd", key, value);
+    else if (key == "tolerance") solver->options.tolerance = nscd_args::number(lmp, "fix nscd", key, value);
+    else if (key == "max_sweeps") solver->options.max_sweeps = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "relaxation") solver->options.relaxation = nscd_args::number(lmp, "fix nscd", key, value);
+    else if (key == "seed") solver->options.seed = (std::uint64_t) nscd_args::whole(lmp, "fix nscd", key, value);
+    else if (key == "exchange") exchange_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "check") solver->options.check_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "warn") warn_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+    else if (key == "overlap_speed") solver->options.overlap_speed = nscd_args::number(lmp, "fix nscd", key, value);
     else if (key == "order") {
       const std::string order = value;
       if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
@@ -195,6 +196,22 @@ void FixNSCD::init()
   check_no_other_integrator();
   check_no_points_in_group();
   check_grains_are_consistent();
+  check_overlap_speed();
+}
+
+/* overlap_speed pushes overlapping grains apart by up to V dt per step. Faster than contacts
+   are looked for ahead (pair_style nscd activation + reach) the grains pushed apart run into
+   others unseen, and a large V shoots them out of the box ("Lost atoms" was all a user saw
+   of overlap_speed 1e6): refused, naming the speed that fits. */
+void FixNSCD::check_overlap_speed()
+{
+  const double ahead = pair->activation_distance() + pair->reach_distance();
+  const double speed = solver->options.overlap_speed;
+  if (speed * dt <= ahead) return;
+  error->all(FLERR, "fix nscd: overlap_speed {} separates overlapping grains by up to {:.4g} per step (timestep "
+             "{}), more than contacts are looked for ahead ({:.4g}, pair_style nscd activation + reach): they "
+             "would run into other grains unseen or fly apart. Use at most {:.4g} (overlap_speed is meant to "
+             "remove small overlaps over a few steps, e.g. 0.05)", speed, speed * dt, dt, ahead, ahead / dt);
 }
 
 /* A grain also moved by another integrator (fix nve, fix rigid, ...) would move twice per
@@ -886,7 +903,7 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 }
 
 /* Restart: the last solved impulses of all contacts, so that a continued run warm-starts
-   exactly as the uninterrupted one. */
+   exactly as the uninterrupted one (format: nscd_restart_blocks.h). */
 void FixNSCD::write_restart(FILE *fp)
 {
   std::vector<nscd::ImpulseRecord> mine;
@@ -895,37 +912,31 @@ void FixNSCD::write_restart(FILE *fp)
   } else {
     for (const nscd::Contact &c : solver->problem.contacts) mine.push_back(nscd::record_of(c));
   }
-  const std::vector<nscd::ImpulseRecord> all = gather_records(mine, world, false);
-  if (comm->me == 0) {
-    const int count = (int) all.size();
-    nscd_restart::write_header(fp, kRestartVersion,
-                               (int) (sizeof(int) + sizeof(double) + count * sizeof(nscd::ImpulseRecord)));
-    fwrite(&count, sizeof(int), 1, fp);
-    fwrite(&warm_start_dt, sizeof(double), 1, fp);
-    fwrite(all.data(), sizeof(nscd::ImpulseRecord), all.size(), fp);
-  }
+  nscd_restart::SolverBlock block;
+  block.records = gather_records(mine, world, false);
+  block.dt = warm_start_dt;
+  if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::solver_block(block));
 }
 
-void FixNSCD::restart(char *block)
+/* read_restart hands every rank the block written above (without its size). */
+void FixNSCD::restart(char *bytes)
 {
-  // read_restart hands every rank the block written above, after its size.
-  const char *buf = block;
-  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
-  if (version > kRestartVersion)
-    error->all(FLERR, "fix nscd {}: the restart file holds its contacts in format {}, this build "
-               "reads formats up to {}; use a newer build, or start without the stored warm "
-               "start ('unfix {}' before the run, then define it again)", id, version,
-               kRestartVersion, id);
-  int count;
-  std::memcpy(&count, buf, sizeof(int));
-  buf += sizeof(int);
-  // The impulses' timestep, so that a run at another `timestep` starts from the same forces
-  // (gather_contacts); before version 2 it is not known and the impulses are taken as they are.
-  warm_start_dt = 0.0;
-  if (version >= 2) {
-    std::memcpy(&warm_start_dt, buf, sizeof(double));
-    buf += sizeof(double);
+  nscd_restart::SolverBlock block;
+  try {
+    block = nscd_restart::read_solver_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix nscd {}: its restart block cannot be used: {}. To start without the stored warm "
+               "start, define fix nscd with another ID", id, e.what());
   }
-  solver->restored_contacts.resize(count);
-  std::memcpy(solver->restored_contacts.data(), buf, count * sizeof(nscd::ImpulseRecord));
+  if (!block.read) {
+    if (comm->me == 0)
+      error->warning(FLERR, "fix nscd {}: the restart file holds the warm start in format {}, whose length this "
+                     "build cannot check; it is not read (the first step starts from zero impulses; write the "
+                     "restart again with this build to keep it)", id, block.format);
+    return;
+  }
+  // The impulses' timestep, so that a run at another `timestep` starts from the same forces
+  // (gather_contacts).
+  warm_start_dt = block.dt;
+  solver->restored_contacts = std::move(block.records);
 }

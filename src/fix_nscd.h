@@ -89,6 +89,7 @@ class FixNSCD : public Fix {
   void stop_on_non_finite_problem();
   void check_grains_are_consistent();
   void check_no_points_in_group();
+  void check_overlap_speed();
   void build_bodies();
   void gather_contacts();
   void count_shares();

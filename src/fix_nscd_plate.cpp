@@ -2,6 +2,7 @@
    and its motion along z. */
 
 #include "fix_nscd_plate.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -11,8 +12,10 @@
 #include "nscd_arrays.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 #include "update.h"
+
+#include "shape/spheropolyhedron.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +25,6 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, NOUTPUTS };
-constexpr int kRestartVersion = 1;    // z, vz, elapsed time, z at the start
 }
 
 /* The plate as fix nscd and fix wire see it: a body of the contact problem. */
@@ -32,6 +34,7 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
 
   void append_contacts(std::vector<nscd::Contact> &, double activation, double dt) override;
   void take_impulses(const nscd::Contact *, int, double dt) override;
+  void stop_if_sinking(const nscd::Contact *first, int count);
   void advance(double) override {}
   bool has_body() const override { return true; }
   nscd::SolverBody body(double dt) const override;
@@ -71,15 +74,18 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 6 || strcmp(arg[4], "mass") != 0)
     error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix ID group nscd/plate Z mass M "
                "[load F0] [rate R] [gravity G] [friction MU] [restitution E]'");
-  p.z = p.z_start = utils::numeric(FLERR, arg[3], false, lmp);
+  p.z = p.z_start = nscd_args::number(lmp, "fix nscd/plate", "height Z", arg[3]);
   if (!std::isfinite(p.z)) error->all(FLERR, "fix nscd/plate: the height {} must be finite", arg[3]);
-  p.mass = utils::numeric(FLERR, arg[5], false, lmp);
+  p.mass = nscd_args::number(lmp, "fix nscd/plate", "mass", arg[5]);
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
     error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", p.mass);
+  if (p.mass < nscd::kMinBodyMass || p.mass > nscd::kMaxBodyMass)
+    error->all(FLERR, "fix nscd/plate: mass {} is outside the {} to {} the solver supports (it squares impulses of "
+               "the order of a body's momentum); change the mass unit", p.mass, nscd::kMinBodyMass, nscd::kMaxBodyMass);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd/plate: keyword '{}' needs a value", key);
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value = nscd_args::number(lmp, "fix nscd/plate", key, arg[iarg + 1]);
     if (!std::isfinite(value))
       error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
     if (key == "load") p.load_start = value;
@@ -186,6 +192,30 @@ void FixNSCDPlate::Plate::take_impulses(const nscd::Contact *first, int count, d
   for (int k = 0; k < count; k++) mine -= first[k].impulse.z();    // on the plate
   mine /= dt;
   MPI_Allreduce(&mine, &reaction, 1, MPI_DOUBLE, MPI_SUM, fix.world);
+  stop_if_sinking(first, count);
+}
+
+/* Under a load far beyond what the scene can take in a step (a huge 'rate'), the plate
+   sinks into the grains: its load drives it past its contacts within one step (they are
+   activated from its velocity at the start of the step), and the solver's relative
+   tolerance leaves impulse errors that let it sink step after step, without an unconverged
+   step. The run stops when the plate's deepest contact at the start of a step goes past a
+   fifth of the grain's bounding radius (the depth at which fix nscd warns about grains
+   inside grains): from there on the scene is not the one asked for (at 1e12 the plate went
+   through the grains and the run ended in "Lost atoms"). */
+void FixNSCDPlate::Plate::stop_if_sinking(const nscd::Contact *first, int count)
+{
+  double mine = 0.0;    // depth / bounding radius
+  for (int k = 0; k < count; k++)
+    mine = std::max(mine, -first[k].gap / avec->radius[first[k].body_i]);
+  double worst = 0.0;
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE, MPI_MAX, fix.world);
+  if (!(worst > 0.2)) return;
+  fix.error->all(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding radius deep in the "
+                 "grains (velocity {:.4g}) under a load of {:.6g} (load {:.6g} + rate {:.6g} x time {:.6g}): a load "
+                 "this large drives it past its contacts within a step, or further than the solver's relative "
+                 "tolerance holds it. Lower the load or its rate, or the timestep", fix.id, fix.update->ntimestep,
+                 worst, vz, load(), load_start, load_rate, elapsed);
 }
 
 double FixNSCDPlate::compute_vector(int n)
@@ -205,23 +235,25 @@ double FixNSCDPlate::compute_vector(int n)
 void FixNSCDPlate::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double state[4] = {plate->z, plate->vz, plate->elapsed, plate->z_start};
-  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
-  fwrite(state, sizeof(double), 4, fp);
+  nscd_restart::PlateBlock block;
+  block.z = plate->z;
+  block.vz = plate->vz;
+  block.elapsed = plate->elapsed;
+  block.z_start = plate->z_start;
+  nscd_restart::write_block(fp, nscd_restart::plate_block(block));
 }
 
-void FixNSCDPlate::restart(char *block)
+void FixNSCDPlate::restart(char *bytes)
 {
-  const char *buf = block;
-  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
-  if (version > kRestartVersion)
-    error->all(FLERR, "fix nscd/plate {}: the restart file holds the plate in format {}, this "
-               "build reads formats up to {}; use a newer build or another fix ID", id, version,
-               kRestartVersion);
-  double state[4];
-  std::memcpy(state, buf, sizeof(state));
-  plate->z = state[0];
-  plate->vz = state[1];
-  plate->elapsed = state[2];
-  plate->z_start = state[3];
+  nscd_restart::PlateBlock block;
+  try {
+    block = nscd_restart::read_plate_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix nscd/plate {}: its restart block cannot be used: {}. To start from the plate "
+               "given in the deck, define it with another fix ID", id, e.what());
+  }
+  plate->z = block.z;
+  plate->vz = block.vz;
+  plate->elapsed = block.elapsed;
+  plate->z_start = block.z_start;
 }

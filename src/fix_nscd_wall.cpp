@@ -1,13 +1,14 @@
 /* fix nscd/wall: the wall's contacts with owned grains, via lib/geometry. */
 
 #include "fix_nscd_wall.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
 #include "nscd_arrays.h"
 #include "nscd_boundary.h"
 #include "nscd_contact.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
@@ -20,12 +21,11 @@
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr int kRestartVersion = 1;    // the kind (0 plane, 1 cylinder), then the reference point
-
-nscd::Vec3 read_vec3(LAMMPS *lmp, char **arg)
+nscd::Vec3 read_vec3(LAMMPS *lmp, const char *what, char **arg)
 {
-  return nscd::Vec3(utils::numeric(FLERR, arg[0], false, lmp), utils::numeric(FLERR, arg[1], false, lmp),
-                    utils::numeric(FLERR, arg[2], false, lmp));
+  nscd::Vec3 v;
+  for (int d = 0; d < 3; d++) v[d] = nscd_args::number(lmp, "fix nscd/wall", fmt::format("{} {}", what, "xyz"[d]), arg[d]);
+  return v;
 }
 
 }    // namespace
@@ -76,8 +76,8 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
   if (strcmp(arg[3], "plane") == 0) {
     if (narg < 10) error->all(FLERR, "Illegal fix nscd/wall plane command: {}", usage);
     wall->kind = Wall::Kind::plane;
-    wall->plane.point = read_vec3(lmp, &arg[4]);
-    const nscd::Vec3 n = read_vec3(lmp, &arg[7]);
+    wall->plane.point = read_vec3(lmp, "plane point", &arg[4]);
+    const nscd::Vec3 n = read_vec3(lmp, "plane normal", &arg[7]);
     if (!(n.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the plane normal (0 0 0) has no direction");
     wall->plane.normal = n.normalized();
     iarg = 10;
@@ -85,11 +85,11 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
     if (narg < 11) error->all(FLERR, "Illegal fix nscd/wall cylinder command: {}", usage);
     wall->kind = Wall::Kind::cylinder;
     nscd::CylinderWall &cylinder = wall->cylinder;
-    cylinder.axis_point = read_vec3(lmp, &arg[4]);
-    const nscd::Vec3 a = read_vec3(lmp, &arg[7]);
+    cylinder.axis_point = read_vec3(lmp, "cylinder axis point", &arg[4]);
+    const nscd::Vec3 a = read_vec3(lmp, "cylinder axis", &arg[7]);
     if (!(a.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the cylinder axis (0 0 0) has no direction");
     cylinder.axis_direction = a.normalized();
-    cylinder.radius = utils::numeric(FLERR, arg[10], false, lmp);
+    cylinder.radius = nscd_args::number(lmp, "fix nscd/wall", "cylinder radius", arg[10]);
     if (!(cylinder.radius > 0.0))
       error->all(FLERR, "fix nscd/wall: cylinder radius {} must be positive", cylinder.radius);
     iarg = 11;
@@ -110,21 +110,21 @@ int FixNSCDWall::parse_option(int narg, char **arg, int iarg)
 {
   const std::string key = arg[iarg];
   if (key == "friction" && iarg + 1 < narg) {
-    const double friction = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double friction = nscd_args::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
     if (!(friction >= 0.0) || !std::isfinite(friction))
       error->all(FLERR, "fix nscd/wall: friction {} must be finite and >= 0", friction);
     wall->friction = friction;
     return iarg + 2;
   }
   if (key == "restitution" && iarg + 1 < narg) {
-    const double restitution = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double restitution = nscd_args::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
     if (!(restitution >= 0.0 && restitution <= 1.0))
       error->all(FLERR, "fix nscd/wall: restitution {} must be in [0, 1]", restitution);
     wall->restitution = restitution;
     return iarg + 2;
   }
   if (key == "velocity" && iarg + 3 < narg) {
-    wall->velocity = read_vec3(lmp, &arg[iarg + 1]);
+    wall->velocity = read_vec3(lmp, "velocity", &arg[iarg + 1]);
     return iarg + 4;
   }
   error->all(FLERR, "fix nscd/wall: unknown or incomplete keyword '{}' (expected friction MU, "
@@ -169,6 +169,47 @@ void FixNSCDWall::setup(int /*vflag*/)
     error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); "
                "check the wall's position and that its normal points into the domain", id,
                any_outside, wall->kind == Wall::Kind::plane ? "behind the plane" : "outside the cylinder");
+  warn_about_grains_in_the_wall();
+}
+
+/* A grain reaching into the wall by more than a fifth of its bounding radius at the start of
+   a run (a cylinder narrower than the grains, grains placed into a wall) keeps that overlap:
+   contacts stop it from growing but do not push it out. Warned about, naming the grain, the
+   depth and, for a cylinder, its radius, as fix nscd warns about grains inside grains. */
+void FixNSCDWall::warn_about_grains_in_the_wall()
+{
+  struct {
+    double share;    // depth / bounding radius
+    int rank;
+  } mine{0.0, comm->me}, worst;
+  double found[3] = {0.0, 0.0, 0.0};    // depth, atom ID, bounding radius
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || wall->avec->shape[i] == 0) continue;
+    const nscd::Spheropolyhedron &shape = wall->avec->shape_of(i);
+    const nscd::ContactSet set = wall->kind == Wall::Kind::plane
+        ? nscd::contact_grain_plane(shape, wall->avec->pose(i), wall->plane, 0.0, wall->workspace)
+        : nscd::contact_grain_cylinder(shape, wall->avec->pose(i), wall->cylinder, 0.0, wall->workspace);
+    for (const nscd::ContactPoint &p : set)
+      if (-p.gap / shape.bounding_radius > mine.share) {
+        mine.share = -p.gap / shape.bounding_radius;
+        found[0] = -p.gap, found[1] = (double) atom->tag[i], found[2] = shape.bounding_radius;
+      }
+  }
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  if (!(worst.share > 0.2)) return;
+  MPI_Bcast(found, 3, MPI_DOUBLE, worst.rank, world);
+  if (comm->me != 0) return;
+  if (wall->kind == Wall::Kind::cylinder)
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at "
+                   "the start of the run ({:.3g} of its bounding radius {:.4g}){}. Contacts keep the overlap from "
+                   "growing but do not push it out: make the cylinder wider than the grains or place them inside it",
+                   id, (tagint) found[1], found[0], wall->cylinder.radius, worst.share, found[2],
+                   wall->cylinder.radius < found[2] ? "; the radius is below the grain's bounding radius: it may not fit at all" : "");
+  else
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall at the start of the "
+                   "run ({:.3g} of its bounding radius {:.4g}). Contacts keep the overlap from growing but do not "
+                   "push it out: place the grains in front of the wall", id, (tagint) found[1], found[0],
+                   worst.share, found[2]);
 }
 
 bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const
@@ -234,28 +275,27 @@ double FixNSCDWall::compute_vector(int n)
 void FixNSCDWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
+  nscd_restart::WallBlock block;
+  block.cylinder = wall->kind == Wall::Kind::cylinder;
   const nscd::Vec3 &p = wall->reference_point();
-  const double state[4] = {wall->kind == Wall::Kind::plane ? 0.0 : 1.0, p.x(), p.y(), p.z()};
-  nscd_restart::write_header(fp, kRestartVersion, sizeof(state));
-  fwrite(state, sizeof(double), 4, fp);
+  block.point = {p.x(), p.y(), p.z()};
+  nscd_restart::write_block(fp, nscd_restart::wall_block(block));
 }
 
-void FixNSCDWall::restart(char *block)
+void FixNSCDWall::restart(char *bytes)
 {
-  const char *buf = block;
-  const int version = nscd_restart::read_version(buf);    // 0 (no header): as version 1
-  if (version > kRestartVersion)
-    error->all(FLERR, "fix nscd/wall {}: the restart file holds the wall in format {}, this "
-               "build reads formats up to {}; use a newer build or another fix ID", id, version,
-               kRestartVersion);
-  double state[4];
-  std::memcpy(state, buf, sizeof(state));
-  const Wall::Kind stored = state[0] == 0.0 ? Wall::Kind::plane : Wall::Kind::cylinder;
-  if (stored != wall->kind) {
+  nscd_restart::WallBlock block;
+  try {
+    block = nscd_restart::read_wall_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix nscd/wall {}: its restart block cannot be used: {}. To start from the position "
+               "given in the deck, define the wall with another fix ID", id, e.what());
+  }
+  if (block.cylinder != (wall->kind == Wall::Kind::cylinder)) {
     if (comm->me == 0)
       error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "
-                     "its position is not used", id, stored == Wall::Kind::plane ? "plane" : "cylinder");
+                     "its position is not used", id, block.cylinder ? "cylinder" : "plane");
     return;
   }
-  wall->reference_point() = nscd::Vec3(state[1], state[2], state[3]);
+  wall->reference_point() = nscd::Vec3(block.point[0], block.point[1], block.point[2]);
 }

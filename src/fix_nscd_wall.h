@@ -38,6 +38,7 @@ class FixNSCDWall : public Fix, public NSCDBoundaryFix {
   std::unique_ptr<Wall> wall;
 
   int parse_option(int narg, char **arg, int iarg);
+  void warn_about_grains_in_the_wall();
 };
 
 }    // namespace LAMMPS_NS

@@ -4,6 +4,7 @@
    output. The physics is in lib/wire (doc/wire_model.md). */
 
 #include "fix_wire.h"
+#include "nscd_args.h"
 #include "fix_wire_lib.h"
 
 #include "angle_wire.h"
@@ -27,6 +28,7 @@
 #include "update.h"
 #include "wire/contact_model.h"
 #include "wire/stability.h"
+#include "wire/wire_overlap.h"
 #include "wire/wire_step.h"
 
 #include <algorithm>
@@ -129,12 +131,12 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   if (key == "substeps") {
     requested_dt_sp = 0.0;
     const bool automatic = strcmp(value, "auto") == 0;    // 0 inside: choose
-    requested_substeps = automatic ? 0 : utils::inumeric(FLERR, value, false, lmp);
+    requested_substeps = automatic ? 0 : (int) nscd_args::whole(lmp, "fix wire", key, value, INT_MIN, INT_MAX);
     if (!automatic && requested_substeps < 1) error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
     return;
   }
   const auto option = plain.find(key);
-  const double x = utils::numeric(FLERR, value, false, lmp);
+  const double x = nscd_args::number(lmp, "fix wire", key, value);
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
   if (key == "skin" && !(x > 0.0)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
@@ -145,6 +147,7 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   mu_d_given = mu_d_given || key == "mu_d";
   if (key == "dt_sp" && !(x > 0.0))
     error->all(FLERR, "fix wire: dt_sp {} must be > 0; for the automatic substep give 'substeps auto' (the default)", x);
+  k_n_given = k_n_given || key == "k_n";
   if (key == "dt_sp") requested_substeps = 0;
 }
 
@@ -152,6 +155,14 @@ int FixWire::setmask() { return POST_FORCE; }
 double FixWire::substep() const { return lib->plan.dt_sp; }
 int FixWire::substeps() const { return lib->plan.substeps; }
 double FixWire::compute_vector(int n) { return diagnostics[n]; }
+
+void *FixWire::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "radius") == 0) return &wire_radius;
+  if (strcmp(name, "k_n") == 0) return &lib->law.k_n;
+  return nullptr;
+}
 
 /* ---------------------------------------------------------------------- setup */
 
@@ -180,6 +191,7 @@ void FixWire::init()
                    std::sqrt(inertia_scale), std::sqrt(inertia_scale), inertia_scale, std::sqrt(inertia_scale));
   check_partners();
   find_boundaries();
+  check_contacts_possible();
   plan_substeps();
   make_contact_model();
 }
@@ -239,6 +251,27 @@ void FixWire::find_boundaries()
   if (lib->boundaries.size() > 32)
     error->all(FLERR, "fix wire: {} walls and plates; the wire can touch at most 32", lib->boundaries.size());
   for (BoundaryView &b : lib->boundaries) b.link.boundary = &b;
+}
+
+/* A wire without contacts (k_n 0) passes through grains, walls and the plate: with any of
+   them in the scene that is refused when k_n was not given (the default 0 is no choice) and
+   warned about when 'k_n 0' was given. */
+void FixWire::check_contacts_possible()
+{
+  if (lib->law.k_n > 0.0) return;
+  int mine = 0, grains = 0;
+  for (int i = 0; i < atom->nlocal && !mine; i++)
+    if (avec->shape[i] != 0) mine = 1;
+  MPI_Allreduce(&mine, &grains, 1, MPI_INT, MPI_MAX, world);
+  if (!grains && lib->boundaries.empty()) return;
+  const char *what = grains ? (lib->boundaries.empty() ? "grains" : "grains, walls and plate") : "walls and plate";
+  if (!k_n_given)
+    error->all(FLERR, "fix wire {}: no contact stiffness k_n given: with the default 0 the wire has no contacts and "
+               "passes through the {} of this scene; give 'k_n K' with 'radius R' (and gamma_n, k_t, mu_s as "
+               "needed), or 'k_n 0' for a wire that touches nothing", id, what);
+  if (comm->me == 0)
+    error->warning(FLERR, "fix wire {}: k_n 0: the wire has no contacts and passes through the {} of this scene",
+                   id, what);
 }
 
 /* n substeps from the options and the stability limit of lib/wire/stability.h; a named
@@ -339,6 +372,7 @@ void FixWire::setup(int /*vflag*/)
 {
   indexed_at = -1;
   gather_elements();
+  warn_about_elements_inside_grains();
   rescale_states(lib->plan.dt_sp);
   if (lib->contacts) lib->contacts->forget_shapes();
   diagnostics[SUBSTEPS] = lib->plan.substeps;
@@ -350,6 +384,58 @@ void FixWire::setup(int /*vflag*/)
   lib->timing = wire::StepTiming();
   substeps_run = 0;
   rebuilds_at_start = lib->contacts ? lib->contacts->rebuilds() : 0;
+}
+
+/* Elements inside grains at the start of a run (placed by hand, 'create_wire ... overlap
+   ignore', a data file): their contacts push them out at about depth x sqrt(k_n / node mass)
+   within the first substeps. Warned about, as fix nscd warns about grains inside grains,
+   when deeper than half the wire radius (a wire laid by create_wire overlaps by at most 0.1
+   of it; one at rest, by its weight over k_n). Each rank tests the elements in its bond list
+   against the grains it holds (owned and ghost). */
+void FixWire::warn_about_elements_inside_grains()
+{
+  if (!lib->contacts || !bond) return;
+  wire::WirePieces pieces;
+  std::vector<std::array<int, 2>> ends;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i = neighbor->bondlist[n][0], j = neighbor->bondlist[n][1];
+    if (!(atom->mask[i] & groupbit) && !(atom->mask[j] & groupbit)) continue;
+    const int first = (int) pieces.nodes.size();
+    pieces.nodes.push_back(vec3(atom->x[i]));
+    pieces.nodes.push_back(vec3(atom->x[j]));
+    pieces.elements.push_back({first, first + 1, 0.0});
+    ends.push_back({i, j});
+  }
+  std::vector<wire::PlacedGrain> grains;
+  std::vector<int> grain_atom;
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+    if (avec->shape[i] != 0) {
+      grains.push_back({&avec->shape_of(i), avec->pose(i)});
+      grain_atom.push_back(i);
+    }
+  const wire::ElementOverlap o = wire::deepest_overlap_with_grains(pieces, wire_radius, grains, {});
+  struct {
+    double depth;
+    int rank;
+  } mine{o.b >= 0 ? o.depth : 0.0, comm->me}, worst;
+  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
+  if (!(worst.depth > 0.5 * wire_radius)) return;
+  double found[4] = {0.0, 0.0, 0.0, INFINITY};    // node IDs, grain ID, the lighter node's mass
+  if (comm->me == worst.rank) {
+    const auto &e = ends[o.a];
+    found[0] = (double) atom->tag[e[0]];
+    found[1] = (double) atom->tag[e[1]];
+    found[2] = (double) atom->tag[grain_atom[o.b]];
+    found[3] = std::min(avec->rmass[e[0]], avec->rmass[e[1]]);
+  }
+  MPI_Bcast(found, 4, MPI_DOUBLE, worst.rank, world);
+  if (comm->me == 0)
+    error->warning(FLERR, "fix wire {}: the wire element of nodes ID {} and {} lies inside grain ID {} by {:.4g} "
+                   "({:.3g} wire radii) at the start of the run; its contact (k_n {:.6g}) will push it out at about "
+                   "{:.3g} (depth x sqrt(k_n / node mass)). Lay the wire outside the grains (create_wire checks this "
+                   "unless 'overlap ignore') or move the grain", id, (tagint) found[0], (tagint) found[1],
+                   (tagint) found[2], worst.depth, worst.depth / wire_radius, lib->law.k_n,
+                   worst.depth * std::sqrt(lib->law.k_n / found[3]));
 }
 
 void FixWire::reset_dt()

@@ -65,6 +65,8 @@ class FixWire : public Fix {
 
   double substep() const;
   int substeps() const;
+  // "radius" (create_wire's default), "k_n" (0: no contacts): pointers to doubles, dim 0.
+  void *extract(const char *, int &) override;
 
  private:
   struct Lib;                   // lib/wire state (fix_wire.cpp)
@@ -77,6 +79,7 @@ class FixWire : public Fix {
 
   // options
   bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
+  bool k_n_given = false;                          // k_n 0 given, or the default
   double mu_ww_s = -1.0, mu_ww_d = -1.0;           // wire-wire friction; < 0: not given
   bool contacts_recorded = false;                  // for compute wire/contacts
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
@@ -118,6 +121,8 @@ class FixWire : public Fix {
   void parse_option(int narg, char **arg, int &iarg);
   void check_partners();
   void find_boundaries();
+  void check_contacts_possible();
+  void warn_about_elements_inside_grains();
   void plan_substeps();
   void refuse_absurd_substeps(int needed);
   std::string requested_substeps_text() const;

@@ -14,11 +14,13 @@
 #include "error.h"
 #include "memory.h"
 #include "nscd_gather.h"
+#include "nscd_restart_blocks.h"
 #include "nscd_timing.h"
 #include "timer.h"
 #include "update.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -130,12 +132,30 @@ int FixWire::pack_restart(int i, double *buf)
   return kGearColumns + 1;
 }
 
+/* The atom's values of the nth fix in atom->extra, each fix's preceded by its count (this
+   fix's: kGearColumns + 1). A count or state that cannot be is refused, naming the atom. */
 void FixWire::unpack_restart(int nlocal, int nth)
 {
-  double **extra = atom->extra;
+  const double *extra = atom->extra[nlocal];
+  const int width = atom->nextra_store;
   int m = 0;
-  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
-  std::copy(&extra[nlocal][m + 1], &extra[nlocal][m + 1] + kGearColumns, gear[nlocal]);
+  for (int k = 0; k <= nth; k++) {
+    const double count = m < width ? extra[m] : 0.0;
+    const bool mine = k == nth;
+    if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) || (mine && count != kGearColumns + 1))
+      error->one(FLERR, "fix wire {}: the restart file's per-atom values of atom ID {} are damaged (a count of {} "
+                 "where {} fit); define fix wire with another ID to start without them", id, atom->tag[nlocal],
+                 count, mine ? kGearColumns + 1 : width - m);
+    if (!mine) m += (int) count;
+  }
+  const double *state = extra + m + 1;
+  const double started = state[kGearColumns - 1];
+  for (int c = 0; c < kGearColumns; c++)
+    if (!std::isfinite(state[c]) || (c == kGearColumns - 1 && started != 0.0 && started != 1.0))
+      error->one(FLERR, "fix wire {}: the restart file's Gear state of atom ID {} holds {} (value {} of {}): "
+                 "it is damaged; define fix wire with another ID to start without it", id, atom->tag[nlocal],
+                 state[c], c + 1, kGearColumns);
+  std::copy(state, state + kGearColumns, gear[nlocal]);
 }
 
 /* The stored Gear states rescaled to a new substep (a new timestep or substep count). */
@@ -180,42 +200,38 @@ double FixWire::memory_usage()
       (lib->contacts ? (double) lib->contacts->candidates() * 256.0 : 0.0);
 }
 
-/* Global restart: a version number, the step of the stored Gear states and the contact
-   memories of all ranks (wire::StoredContact, plain numbers). */
+/* Global restart: the step of the stored Gear states and the contact memories of all ranks
+   (format: nscd_restart_blocks.h). */
 void FixWire::write_restart(FILE *fp)
 {
   std::vector<wire::StoredContact> mine;
   // Read from a restart and no step since: every rank holds them all; write them once.
   if (!memories_on_every_rank || comm->me == 0) mine = lib->contacts ? lib->contacts->memories() : lib->restored;
-  const std::vector<wire::StoredContact> all = gather_records(mine, world, false);
-  if (comm->me != 0) return;
-  const double header[3] = {kRestartVersion, state_dt, (double) all.size()};
-  const int size = (int) (sizeof(header) + all.size() * sizeof(wire::StoredContact));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(header, sizeof(double), 3, fp);
-  if (!all.empty()) fwrite(all.data(), sizeof(wire::StoredContact), all.size(), fp);    // data() may be null
+  nscd_restart::WireBlock block;
+  block.memories = gather_records(mine, world, false);
+  block.dt = state_dt;
+  if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::wire_block(block));
 }
 
 /* read_restart hands every rank the whole block; hand_over_memories() keeps the own ones. */
-void FixWire::restart(char *buf)
+void FixWire::restart(char *bytes)
 {
-  double header[3];
-  std::memcpy(header, buf, sizeof(double));
-  if (header[0] >= 0.0) {    // an older block without version: (dt, count, records)
-    state_dt = header[0];
+  nscd_restart::WireBlock block;
+  try {
+    block = nscd_restart::read_wire_block(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    error->all(FLERR, "fix wire {}: its restart block cannot be used: {}. To start without the stored "
+               "friction memories, define fix wire with another ID", id, e.what());
+  }
+  state_dt = block.dt;
+  if (!block.memories_read) {
     if (comm->me == 0)
-      error->warning(FLERR, "fix wire: restart file of an older fix wire: its contacts' friction springs "
-                     "are not read (they start again from zero)");
+      error->warning(FLERR, "fix wire {}: the restart file holds the wire in format {}, whose length this build "
+                     "cannot check: its contacts' friction springs are not read (they start again from zero)",
+                     id, block.format);
     return;
   }
-  if (header[0] != kRestartVersion)    // versions are negative numbers: -2 is format 2
-    error->all(FLERR, "fix wire {}: the restart file holds the wire in format {}, this build reads "
-               "format {}; use a newer build or another fix ID", id, -header[0], -kRestartVersion);
-  std::memcpy(header, buf, sizeof(header));
-  state_dt = header[1];
-  lib->restored.resize((size_t) header[2]);
-  if (!lib->restored.empty())    // data() may be null
-    std::memcpy(lib->restored.data(), buf + sizeof(header), lib->restored.size() * sizeof(wire::StoredContact));
+  lib->restored = std::move(block.memories);
   memories_on_every_rank = true;
 }
 

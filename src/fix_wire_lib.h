@@ -15,8 +15,6 @@
 
 namespace LAMMPS_NS {
 
-constexpr double kRestartVersion = -2.0;    // first number of the global restart block
-
 // A wall or the plate as the wire's contact model sees it.
 struct BoundaryView final : nscd::wire::NodeBoundary {
   NSCDBoundary *boundary = nullptr;

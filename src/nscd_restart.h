@@ -1,11 +1,18 @@
-/* Global restart blocks of this package's fixes carry a format version.
+/* Restart blocks of this package: a header that names them and gives their size, and a
+   reader that never reads past the size and refuses anything it cannot check.
 
-   A block is: the size in bytes of what follows (int, LAMMPS' convention), the header
-   {kMagic, version} (two ints), then the fix's own payload. Blocks written before versions
-   existed (before LAMMPS 4 Feb 2025 became the default) have no header; their payload is
-   that of version 1. Their first four bytes are a record count or part of a double, which
-   cannot be kMagic followed by a version this code knows (2^-64 for a double), so they
-   are recognised as version 0. */
+   A global fix block, as LAMMPS writes it, is: the size in bytes of what follows (int,
+   LAMMPS' own field), then our header {kMagic, version} (two int32), then, from the
+   "sized" format of each style on, the payload's size in bytes (int64), then the payload.
+   LAMMPS hands Fix::restart() the bytes after its size field but not the size itself, so the
+   block repeats it: every count inside the payload is checked against that size before
+   anything is read or allocated, so a damaged count, size or mark is refused, never
+   trusted. (Only a size and a count damaged alike, or LAMMPS' own size field, could still
+   lead the reader astray; LAMMPS' own check of the file's end catches most of the latter.)
+   Blocks that do not begin with kMagic (damaged, or written before blocks carried a
+   format) are refused.
+
+   Plain C++ (no LAMMPS header): the fuzz targets of tests/fuzz read blocks with it. */
 
 #ifndef LMP_NSCD_RESTART_H
 #define LMP_NSCD_RESTART_H
@@ -13,33 +20,141 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace nscd_restart {
 
-constexpr std::int32_t kMagic = 0x4e534344;    // "NSCD"
-constexpr int kHeaderBytes = 2 * sizeof(std::int32_t);
-constexpr std::int32_t kNewestKnown = 1000;    // versions above are not ours: no header
+constexpr std::int32_t kMagic = 0x4e534344;    // "NSCD" (as bytes on a little-endian machine: "DCSN")
+constexpr std::size_t kMarkBytes = 2 * sizeof(std::int32_t);                     // {kMagic, version}
+constexpr std::size_t kSizedHeaderBytes = kMarkBytes + sizeof(std::int64_t);    // and the payload size
+constexpr std::int32_t kNewestKnown = 1000;    // a larger version number is damage, not a newer build
+// LAMMPS does not tell a fix how many bytes its block holds: the reader then relies on the
+// size the block states (the fuzz targets pass the true size).
+constexpr std::size_t kUnknownSize = std::numeric_limits<std::size_t>::max();
 
-// Writes the block's size (header and payload) and the header; the payload follows.
-inline void write_header(FILE *fp, std::int32_t version, int payload_bytes)
+// A block that is damaged, foreign or of a format this build cannot check; the message says
+// what is wrong with it (the caller adds the style and ID).
+struct Damaged : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The header of a block with its payload size: {kMagic, version, payload bytes}, then the
+// payload (LAMMPS' own size field is written in front by write_block).
+inline std::string sized_header(std::int32_t version, std::size_t payload_bytes)
 {
-  const int size = kHeaderBytes + payload_bytes;
-  const std::int32_t header[2] = {kMagic, version};
+  std::string bytes(kSizedHeaderBytes, '\0');
+  const std::int32_t mark[2] = {kMagic, version};
+  const std::int64_t size = (std::int64_t) payload_bytes;
+  std::memcpy(&bytes[0], mark, kMarkBytes);
+  std::memcpy(&bytes[kMarkBytes], &size, sizeof(size));
+  return bytes;
+}
+
+// Writes a global fix block: LAMMPS' size field, then the block (header and payload).
+inline void write_block(FILE *fp, const std::string &block)
+{
+  const int size = (int) block.size();
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(header, sizeof(std::int32_t), 2, fp);
+  fwrite(block.data(), 1, block.size(), fp);
 }
 
-// The format version of the block that LAMMPS hands to Fix::restart() (after its size),
-// 0 for a block without a header; `buf` is moved past the header, onto the payload.
-inline int read_version(const char *&buf)
+// The format version of a block's mark {kMagic, version}: refuses a block without the mark,
+// or with a version number no build writes (< 1 or above kNewestKnown).
+inline std::int32_t version_of_mark(const std::int32_t mark[2])
 {
-  std::int32_t header[2];
-  std::memcpy(header, buf, sizeof(header));
-  if (header[0] != kMagic || header[1] < 1 || header[1] > kNewestKnown) return 0;
-  buf += kHeaderBytes;
-  return header[1];
+  auto hex = [](std::int32_t x) {
+    char text[16];
+    std::snprintf(text, sizeof(text), "%08x", (unsigned) x);
+    return std::string(text);
+  };
+  if (mark[0] != kMagic)
+    throw Damaged("it does not begin with this package's mark (0x" + hex(mark[0]) + " instead of 0x" + hex(kMagic) +
+                  "): the file is damaged, or was written before restart blocks carried a format (a build "
+                  "older than Nov 2026)");
+  if (mark[1] < 1 || mark[1] > kNewestKnown)
+    throw Damaged("its format number " + std::to_string(mark[1]) + " is not one this package writes (1 to " +
+                  std::to_string(kNewestKnown) + "): it is damaged");
+  return mark[1];
 }
+
+// Reads a block front to back within `available` bytes (kUnknownSize: as many as the block
+// states); every read past the end throws Damaged.
+class BlockReader {
+ public:
+  BlockReader(const char *block, std::size_t available) : at_(block), left_(available) {}
+
+  // The format version from the block's mark (version_of_mark).
+  std::int32_t version()
+  {
+    std::int32_t mark[2];
+    take(mark, sizeof(mark), "its mark and format number");
+    return version_of_mark(mark);
+  }
+
+  // The payload size that follows the mark in sized formats: from here on, reads stop there.
+  void limit_to_stated_size()
+  {
+    std::int64_t size;
+    take(&size, sizeof(size), "its size");
+    // LAMMPS stores a block's size as an int: no block is larger
+    const std::int64_t largest = std::numeric_limits<int>::max() - (std::int64_t) kSizedHeaderBytes;
+    if (size < 0 || size > largest || (std::uint64_t) size > left_)
+      throw Damaged("it states a payload of " + std::to_string(size) + " bytes, but " +
+                    (left_ == kUnknownSize ? std::string("that is impossible") : std::to_string(left_) + " follow") +
+                    ": the block is damaged or cut short");
+    left_ = (std::size_t) size;
+  }
+
+  template <class T> T value(const char *what)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "plain values only");
+    T x;
+    take(&x, sizeof(T), what);
+    return x;
+  }
+
+  // `count` records, after checking that they fit in what is left (before allocating).
+  template <class Record> std::vector<Record> records(std::int64_t count, const char *what)
+  {
+    static_assert(std::is_trivially_copyable<Record>::value, "plain records only");
+    if (left_ == kUnknownSize) throw std::logic_error("BlockReader: records of a block without a size");
+    if (count < 0 || (std::uint64_t) count > left_ / sizeof(Record))
+      throw Damaged("it counts " + std::to_string(count) + " " + what + " of " + std::to_string(sizeof(Record)) +
+                    " bytes, but only " + std::to_string(left_) + " bytes are left: the count is damaged");
+    std::vector<Record> out((std::size_t) count);
+    if (count > 0) take(out.data(), (std::size_t) count * sizeof(Record), what);
+    return out;
+  }
+
+  // A sized block must be read to its last byte: anything left over means a count is wrong.
+  void expect_end() const
+  {
+    if (left_ != 0)
+      throw Damaged(std::to_string(left_) + " bytes are left after its contents: a count or the size is damaged");
+  }
+
+  std::size_t left() const { return left_; }
+
+ private:
+  const char *at_;
+  std::size_t left_;
+
+  void take(void *to, std::size_t n, const char *what)
+  {
+    if (n > left_)
+      throw Damaged(std::string("it ends inside ") + what + " (" + std::to_string(n) + " bytes needed, " +
+                    std::to_string(left_) + " left): the block is damaged or cut short");
+    std::memcpy(to, at_, n);
+    at_ += n;
+    if (left_ != kUnknownSize) left_ -= n;
+  }
+
+};
 
 }    // namespace nscd_restart
 }    // namespace LAMMPS_NS

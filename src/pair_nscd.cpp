@@ -1,6 +1,7 @@
 /* pair_style nscd: narrow phase over LAMMPS' neighbour list, contact laws per type pair. */
 
 #include "pair_nscd.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -15,7 +16,7 @@
 
 #include "nscd_arrays.h"
 #include "nscd_contact.h"
-#include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 
 #include "geometry/contact.h"
 #include "shape/shape_library.h"
@@ -72,37 +73,52 @@ void PairNSCD::allocate()
     }
 }
 
-/* pair_style nscd [activation D | activation/fraction F] [reach D | reach/fraction F] */
+/* pair_style nscd [activation D | activation/fraction F] [reach D | reach/fraction F]
+   Each distance is given once, in one of its two forms: two values for one distance are
+   refused rather than letting the later one win silently. */
 void PairNSCD::settings(int narg, char **arg)
 {
   activation_given = -1.0;
   activation_fraction = 0.1;
   reach_given = -1.0;
   reach_fraction = 0.5;
+  std::string activation_as, reach_as;    // the keyword and value that gave each distance
+  auto once = [&](std::string &given_as, const char *key, const char *value) {
+    const std::string now = fmt::format("{} {}", key, value);
+    if (!given_as.empty())
+      error->all(FLERR, "pair_style nscd: '{}' and '{}' both set the {} distance; give it once, as a distance "
+                 "or as a fraction of the smallest grain's bounding radius", given_as, now,
+                 strncmp(key, "activation", 10) == 0 ? "activation" : "reach");
+    given_as = now;
+  };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (iarg + 1 >= narg)
       error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
     // (the text as given in the messages: older LAMMPS parse 1e400 as inf without a word)
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value = nscd_args::number(lmp, "pair_style nscd", arg[iarg], arg[iarg + 1]);
     if (strcmp(arg[iarg], "activation") == 0) {
+      once(activation_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
         error->all(FLERR, "pair_style nscd: activation {} must be finite and >= 0", arg[iarg + 1]);
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
-      if (!(value >= 0.0 && value <= 1.0))
-        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, 1] (a fraction of "
+      once(activation_as, arg[iarg], arg[iarg + 1]);
+      if (!(value >= 0.0 && value <= nscd_restart::kMaxActivationFraction))
+        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, {}] (a fraction of "
                    "the smallest grain's bounding radius); for fast grains lower the timestep",
-                   value);
+                   value, nscd_restart::kMaxActivationFraction);
       activation_given = -1.0;
       activation_fraction = value;
     } else if (strcmp(arg[iarg], "reach") == 0) {
+      once(reach_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
         error->all(FLERR, "pair_style nscd: reach {} must be finite and >= 0", arg[iarg + 1]);
       reach_given = value;
     } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
-      if (!(value >= 0.0 && value <= 20.0))
-        error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, 20] (a multiple of the "
-                   "smallest grain's bounding radius)", value);
+      once(reach_as, arg[iarg], arg[iarg + 1]);
+      if (!(value >= 0.0 && value <= nscd_restart::kMaxReachFraction))
+        error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, {}] (a multiple of the "
+                   "smallest grain's bounding radius)", value, nscd_restart::kMaxReachFraction);
       reach_given = -1.0;
       reach_fraction = value;
     } else {
@@ -122,14 +138,14 @@ void PairNSCD::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const double friction_one = utils::numeric(FLERR, arg[2], false, lmp);
+  const double friction_one = nscd_args::number(lmp, "pair_coeff nscd", "friction", arg[2]);
   if (!(friction_one >= 0.0) || !std::isfinite(friction_one))
     error->all(FLERR, "pair_coeff nscd: friction coefficient {} must be finite and >= 0", friction_one);
   double restitution_one = 0.0;
   if (narg == 5) {
     if (strcmp(arg[3], "restitution") != 0)
       error->all(FLERR, "pair_coeff nscd: unknown keyword '{}' (expected restitution)", arg[3]);
-    restitution_one = utils::numeric(FLERR, arg[4], false, lmp);
+    restitution_one = nscd_args::number(lmp, "pair_coeff nscd", "restitution", arg[4]);
     if (!(restitution_one >= 0.0 && restitution_one <= 1.0))
       error->all(FLERR, "pair_coeff nscd: restitution {} must be in [0, 1]", restitution_one);
   }
@@ -274,73 +290,112 @@ double PairNSCD::radii2cut(double ri, double rj)
   return ri + rj + activation + reach;
 }
 
+/* Restart (format: nscd_restart_blocks.h): the settings, then friction and restitution of
+   every type pair that has them. */
 void PairNSCD::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) {
-        fwrite(&mu[i][j], sizeof(double), 1, fp);
-        fwrite(&restitution_coeff[i][j], sizeof(double), 1, fp);
-      }
+      const std::string bytes = nscd_restart::pair_coefficient_bytes({setflag[i][j], mu[i][j], restitution_coeff[i][j]});
+      fwrite(bytes.data(), 1, bytes.size(), fp);
     }
 }
 
+namespace {
+// The pair's part of a restart file, read by rank 0 as nscd_restart's readers expect: the
+// end of the file is a damaged block, not LAMMPS' generic "unexpected end of file".
+class RestartFile {
+ public:
+  explicit RestartFile(FILE *fp) : fp_(fp) {}
+  std::int32_t version()
+  {
+    std::int32_t mark[2];
+    take(mark, sizeof(mark), "its mark and format number");
+    return nscd_restart::version_of_mark(mark);
+  }
+  template <class T> T value(const char *what)
+  {
+    T x;
+    take(&x, sizeof(T), what);
+    return x;
+  }
+
+ private:
+  FILE *fp_;
+  void take(void *to, std::size_t n, const char *what)
+  {
+    if (fread(to, 1, n, fp_) != n)
+      throw nscd_restart::Damaged(std::string("the file ends inside ") + what + ": it is cut short");
+  }
+};
+}    // namespace
+
+/* Rank 0 reads, every rank gets the values or the problem (then all stop alike). */
 void PairNSCD::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
-  const int me = comm->me;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (!setflag[i][j]) continue;
-      if (me == 0) {
-        utils::sfread(FLERR, &mu[i][j], sizeof(double), 1, fp, nullptr, error);
-        utils::sfread(FLERR, &restitution_coeff[i][j], sizeof(double), 1, fp, nullptr, error);
-      }
-      MPI_Bcast(&mu[i][j], 1, MPI_DOUBLE, 0, world);
-      MPI_Bcast(&restitution_coeff[i][j], 1, MPI_DOUBLE, 0, world);
+  const int n = atom->ntypes;
+  std::vector<nscd_restart::PairCoefficient> all;
+  std::string problem;
+  if (comm->me == 0) {
+    RestartFile in(fp);
+    for (int i = 1; i <= n && problem.empty(); i++)
+      for (int j = i; j <= n && problem.empty(); j++) try {
+          all.push_back(nscd_restart::read_pair_coefficient(in));
+        } catch (nscd_restart::Damaged &e) {
+          problem = fmt::format("type pair {} {}: {}", i, j, e.what());
+        }
+  }
+  stop_if_damaged(problem);
+  all.resize((size_t) n * (n + 1) / 2);
+  MPI_Bcast(all.data(), (int) (all.size() * sizeof(all[0])), MPI_BYTE, 0, world);
+  for (int i = 1, k = 0; i <= n; i++)
+    for (int j = i; j <= n; j++, k++) {
+      setflag[i][j] = all[k].set;
+      mu[i][j] = all[k].friction;
+      restitution_coeff[i][j] = all[k].restitution;
     }
 }
 
-/* Settings, version 1: {kMagic, 1}, then activation given and fraction, reach given and
-   fraction. Files written before versions hold the two activation values only. */
 void PairNSCD::write_restart_settings(FILE *fp)
 {
-  const std::int32_t header[2] = {nscd_restart::kMagic, 1};
-  const double values[4] = {activation_given, activation_fraction, reach_given, reach_fraction};
-  fwrite(header, sizeof(std::int32_t), 2, fp);
-  fwrite(values, sizeof(double), 4, fp);
+  const std::string bytes = nscd_restart::pair_settings_bytes({activation_given, activation_fraction, reach_given,
+                                                              reach_fraction});
+  fwrite(bytes.data(), 1, bytes.size(), fp);
 }
 
 void PairNSCD::read_restart_settings(FILE *fp)
 {
-  double values[4] = {-1.0, 0.1, -1.0, 0.5};
-  int version = 0;
+  nscd_restart::PairSettings s;
+  std::string problem;
   if (comm->me == 0) {
-    char first[8];    // the header, or the first double of a file without one
-    utils::sfread(FLERR, first, 1, 8, fp, nullptr, error);
-    const char *cursor = first;
-    version = nscd_restart::read_version(cursor);
-    if (version == 0) {    // activation given, then its fraction
-      std::memcpy(&values[0], first, sizeof(double));
-      utils::sfread(FLERR, &values[1], sizeof(double), 1, fp, nullptr, error);
-    } else {
-      utils::sfread(FLERR, values, sizeof(double), 4, fp, nullptr, error);
+    RestartFile in(fp);
+    try {
+      s = nscd_restart::read_pair_settings(in);
+    } catch (nscd_restart::Damaged &e) {
+      problem = e.what();
     }
   }
-  MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version > 1)
-    error->all(FLERR, "pair_style nscd: the restart file holds settings in format {}, this build "
-               "reads formats up to 1; use a newer build", version);
-  MPI_Bcast(values, 4, MPI_DOUBLE, 0, world);
-  activation_given = values[0];
-  activation_fraction = values[1];
-  reach_given = values[2];
-  reach_fraction = values[3];
+  stop_if_damaged(problem);
+  MPI_Bcast(&s, sizeof(s), MPI_BYTE, 0, world);
+  activation_given = s.activation_given;
+  activation_fraction = s.activation_fraction;
+  reach_given = s.reach_given;
+  reach_fraction = s.reach_fraction;
+}
+
+/* A problem found by rank 0 stops every rank with its text. */
+void PairNSCD::stop_if_damaged(std::string problem)
+{
+  int size = (int) problem.size();
+  MPI_Bcast(&size, 1, MPI_INT, 0, world);
+  if (size == 0) return;
+  problem.resize(size);
+  MPI_Bcast(&problem[0], size, MPI_CHAR, 0, world);
+  error->all(FLERR, "pair_style nscd: the restart file's settings cannot be used: {}. Write the restart "
+             "again, or start from a data file", problem);
 }
 
 void *PairNSCD::extract(const char *name, int &dim)

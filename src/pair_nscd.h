@@ -15,6 +15,7 @@ PairStyle(nscd,PairNSCD);
 #include "pair.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace nscd {
@@ -71,6 +72,7 @@ class PairNSCD : public Pair {
   void allocate();
   void add_grain_contacts(int i, int j);
   void check_periodic_box_holds_grains();
+  void stop_if_damaged(std::string problem);
 };
 
 }    // namespace LAMMPS_NS

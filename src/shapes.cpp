@@ -2,6 +2,7 @@
    parses the deck and moves shapes onto atoms. */
 
 #include "shapes.h"
+#include "nscd_args.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -113,8 +114,8 @@ void Shapes::random(int narg, char **arg)
   if (narg < 3 || strcmp(arg[1], "seed") != 0)
     error->all(FLERR, "Illegal shapes random command: expected 'shapes random N seed SEED "
                "[vertices NMIN NMAX] [size DMIN DMAX] [axes B/A C/A] [radius R]'");
-  const bigint requested = utils::bnumeric(FLERR, arg[0], false, lmp);
-  const bigint seed = utils::bnumeric(FLERR, arg[2], false, lmp);
+  const bigint requested = nscd_args::whole(lmp, "shapes random", "count", arg[0]);
+  const bigint seed = nscd_args::whole(lmp, "shapes random", "seed", arg[2]);
   const int room = nscd::ShapeLibrary::kMaxShapes - avec->shapes().size();
   if (requested < 1 || requested > room)
     error->all(FLERR, "shapes random: count {} must be between 1 and {} (a library holds at most "
@@ -129,8 +130,8 @@ void Shapes::random(int narg, char **arg)
     };
     if (key == "vertices") {
       need(2);
-      const bigint lo = utils::bnumeric(FLERR, arg[iarg + 1], false, lmp);
-      const bigint hi = utils::bnumeric(FLERR, arg[iarg + 2], false, lmp);
+      const bigint lo = nscd_args::whole(lmp, "shapes random", "vertices NMIN", arg[iarg + 1]);
+      const bigint hi = nscd_args::whole(lmp, "shapes random", "vertices NMAX", arg[iarg + 2]);
       if (lo < 4 || hi < lo || hi > 10000)
         error->all(FLERR, "shapes random: vertices {} {} must satisfy 4 <= NMIN <= NMAX <= 10000",
                    lo, hi);
@@ -139,17 +140,17 @@ void Shapes::random(int narg, char **arg)
       iarg += 3;
     } else if (key == "size") {
       need(2);
-      params.min_diameter = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      params.max_diameter = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      params.min_diameter = nscd_args::number(lmp, "shapes random", "size DMIN", arg[iarg + 1]);
+      params.max_diameter = nscd_args::number(lmp, "shapes random", "size DMAX", arg[iarg + 2]);
       iarg += 3;
     } else if (key == "axes") {
       need(2);
-      params.ratio_b = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      params.ratio_c = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      params.ratio_b = nscd_args::number(lmp, "shapes random", "axes B/A", arg[iarg + 1]);
+      params.ratio_c = nscd_args::number(lmp, "shapes random", "axes C/A", arg[iarg + 2]);
       iarg += 3;
     } else if (key == "radius") {
       need(1);
-      params.radius = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      params.radius = nscd_args::number(lmp, "shapes random", "radius", arg[iarg + 1]);
       iarg += 2;
     } else {
       error->all(FLERR, "shapes random: unknown keyword '{}' (expected vertices, size, axes, "
@@ -248,9 +249,9 @@ void Shapes::assign(int narg, char **arg)
     if (key == "shape" && iarg + 1 < narg && strcmp(arg[iarg + 1], "random") == 0) {
       need(4);
       shape_mode = RANDOM;
-      shape_lo = utils::inumeric(FLERR, arg[iarg + 2], false, lmp);
-      shape_hi = utils::inumeric(FLERR, arg[iarg + 3], false, lmp);
-      shape_seed = utils::bnumeric(FLERR, arg[iarg + 4], false, lmp);
+      shape_lo = (int) nscd_args::whole(lmp, "shapes assign", "shape random IMIN", arg[iarg + 2], INT_MIN, INT_MAX);
+      shape_hi = (int) nscd_args::whole(lmp, "shapes assign", "shape random IMAX", arg[iarg + 3], INT_MIN, INT_MAX);
+      shape_seed = nscd_args::whole(lmp, "shapes assign", "shape random SEED", arg[iarg + 4]);
       if (shape_lo > shape_hi)
         error->all(FLERR, "shapes assign: shape random {} {}: IMIN must not exceed IMAX",
                    shape_lo, shape_hi);
@@ -258,29 +259,29 @@ void Shapes::assign(int narg, char **arg)
     } else if (key == "shape") {
       need(1);
       shape_mode = FIXED;
-      shape_lo = shape_hi = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      shape_lo = shape_hi = (int) nscd_args::whole(lmp, "shapes assign", "shape", arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "density") {
       need(1);
-      density = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      density = nscd_args::number(lmp, "shapes assign", "density", arg[iarg + 1]);
       if (!(density > 0.0)) error->all(FLERR, "shapes assign: density {} must be positive", density);
       iarg += 2;
     } else if (key == "mass") {
       need(1);
-      mass = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      mass = nscd_args::number(lmp, "shapes assign", "mass", arg[iarg + 1]);
       if (!(mass > 0.0)) error->all(FLERR, "shapes assign: mass {} must be positive", mass);
       iarg += 2;
     } else if (key == "orient" && iarg + 1 < narg && strcmp(arg[iarg + 1], "random") == 0) {
       need(2);
       orient_mode = RANDOM;
-      orient_seed = utils::bnumeric(FLERR, arg[iarg + 2], false, lmp);
+      orient_seed = nscd_args::whole(lmp, "shapes assign", "orient random SEED", arg[iarg + 2]);
       iarg += 3;
     } else if (key == "orient" && iarg + 1 < narg && strcmp(arg[iarg + 1], "quat") == 0) {
       need(5);
       orient_mode = FIXED;
       double norm = 0.0;
       for (int k = 0; k < 4; k++) {
-        fixed_quat[k] = utils::numeric(FLERR, arg[iarg + 2 + k], false, lmp);
+        fixed_quat[k] = nscd_args::number(lmp, "shapes assign", "orient quat", arg[iarg + 2 + k]);
         norm += fixed_quat[k] * fixed_quat[k];
       }
       if (!(norm > 1e-20)) error->all(FLERR, "shapes assign: orient quat has zero length");

@@ -30,6 +30,29 @@ def cube_scaled(s, name="cube", radius="0"):
     return f"shape {name}\nradius {radius}\nvertices 8\n{body}\nend\n"
 
 
+# Damages a restart file in place, as a deck's `shell` command runs it: FILE FIX_ID STYLE WHAT
+# finds the global block of that fix (its ID and style as counted strings, LAMMPS' size, then
+# the package's mark) and overwrites a field; "truncate" cuts the file in half.
+DAMAGE_SCRIPT = r"""
+import struct, sys
+path, fix_id, style, what = sys.argv[1:5]
+data = bytearray(open(path, "rb").read())
+if what == "truncate":
+    open(path, "wb").write(data[: len(data) // 2]); sys.exit(0)
+def counted(t): return struct.pack("i", len(t) + 1) + t.encode() + b"\0"
+marker = counted(fix_id) + counted(style)
+at = data.find(marker)
+while at >= 0 and struct.unpack_from("i", data, at + len(marker) + 4)[0] != 0x4E534344:
+    at = data.find(marker, at + 1)
+block = at + len(marker) + 4
+fields = {"mark": ("i", 0, 7), "count": ("q", 16, 10**9), "size": ("q", 8, 4), "nan": ("d", 32 + 24, float("nan")),
+          "kind": ("d", 16, 2.0), "format": ("i", 4, 999), "dt": ("d", 24, 5e-315),
+          "wire_count": ("q", 24, 10**9), "wire_dt": ("d", 16, 5e-315)}
+form, offset, value = fields[what]
+struct.pack_into(form, data, block + offset, value)
+open(path, "wb").write(data)
+"""
+
 # Files a case may use, written into its working folder.
 FILES = {
     "cube.shapes": CUBE,
@@ -52,6 +75,17 @@ FILES = {
     "line.shapes": "shape c\nradius 0\nvertices 3\n0 0 0\n1 0 0\n2 0 0\nend\n",
     "flat.shapes": "shape c\nradius 0\nvertices 4\n0 0 0\n1 0 0\n0 1 0\n1 1 0\nend\n",
     "path.txt": "0 0 1\n1 0 1\n1 1 1\n",
+    "nan_path.txt": "0 -2 1\nnan -1 1\n1 -2 1\n",
+    "inf_path.txt": "0 -2 1\ninf -1 1\n1 -2 1\n",
+    "huge_path.txt": "0 -2 1\n1e400 -1 1\n1 -2 1\n",
+    "header_path.txt": "x y z\n0 -2 1\n1 -2 1\n",
+    "bad_shape.data": "bad shape id\n\n1 atoms\n1 atom types\n\n-5 5 xlo xhi\n-5 5 ylo yhi\n-5 5 zlo zhi\n\n"
+                      "Atoms # spheropolyhedron\n\n1 1 7 1.0 0 0 0.5 1 0 0 0\n",
+    "bad_mass.data": "bad mass\n\n1 atoms\n1 atom types\n\n-5 5 xlo xhi\n-5 5 ylo yhi\n-5 5 zlo zhi\n\n"
+                     "Atoms # spheropolyhedron\n\n1 1 1 -1.0 0 0 0.5 1 0 0 0\n",
+    "bad_quat.data": "bad quaternion\n\n1 atoms\n1 atom types\n\n-5 5 xlo xhi\n-5 5 ylo yhi\n-5 5 zlo zhi\n\n"
+                     "Atoms # spheropolyhedron\n\n1 1 1 1.0 0 0 0.5 0 0 0 0\n",
+    "damage.py": DAMAGE_SCRIPT,
 }
 
 BASE = [
@@ -81,6 +115,18 @@ WIRE = [
 ]
 
 
+# The wire scene written to a restart file, damaged by damage.py, and read back with the fixes
+# defined again: `damaged(fix, style, what)`.
+def damaged(fix_id, style, what):
+    lines = deck(WIRE, {"create_wire": "create_wire 2 line -0.8 0 1.0201 0.8 0 1.0201 bond 1 angle 1 mass 0.01 radius 0.02",
+                        "fix g ": "fix g all gravity 1.0 vector 0.1 0 -1"},
+                 add=["fix plate all nscd/plate 3 mass 1"], run="run 60")
+    again = [l for l in lines if l.startswith(("neighbor", "neigh_modify", "timestep", "fix ", "group "))]
+    return lines + ["write_restart r.restart", "clear",
+                    f"shell /usr/bin/python3 damage.py r.restart {fix_id} {style} {what}",
+                    "read_restart r.restart"] + again + ["run 1"]
+
+
 def deck(base, replace=None, add=(), drop=(), run=None):
     """base with lines starting with a key of `replace` replaced, `add` before the last line
     (the run), lines starting with an entry of `drop` removed, and the run line replaced."""
@@ -100,6 +146,8 @@ def shapes_deck(*lines):
     return ["units lj", "atom_style spheropolyhedron", "region box block -5 5 -5 5 -5 5",
             "create_box 1 box", *lines]
 
+
+EXAMPLES = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "examples")
 
 # (name, deck lines, expected outcome, substrings the message must hold)
 #   expected outcome: "error", "warning" or "ok"
@@ -246,6 +294,90 @@ CASES = [
      "error", ["400"]),
     ("create_wire bogus path", deck(WIRE, {"create_wire": "create_wire 2 spiral 0 0 0.3 bond 1 mass 0.01"}),
      "error", ["spiral"]),
+    # --- issue 25: numbers given to keywords
+    ("tolerance nan", deck(BASE, {"fix solver": "fix solver all nscd tolerance nan"}), "error", ["tolerance", "nan"]),
+    ("max_sweeps 2.5", deck(BASE, {"fix solver": "fix solver all nscd max_sweeps 2.5"}), "error", ["max_sweeps", "2.5"]),
+    ("friction nan", deck(BASE, {"pair_coeff": "pair_coeff * * nan"}), "error", ["friction", "nan"]),
+    ("activation inf", deck(BASE, {"pair_style": "pair_style nscd activation inf"}), "error", ["activation", "inf"]),
+    ("wall point nan", deck(BASE, {"fix floor": "fix floor all nscd/wall plane 0 0 nan 0 0 1"}), "error", ["point", "nan"]),
+    ("plate mass inf", deck(BASE, add=["fix plate all nscd/plate 3 mass inf"]), "error", ["mass", "inf"]),
+    ("fix wire k_n nan", deck(WIRE, {"fix w ": "fix w wire wire radius 0.02 k_n nan"}), "error", ["k_n", "nan"]),
+    ("fix wire substeps 2.5", deck(WIRE, {"fix w ": "fix w wire wire radius 0.02 k_n 200 substeps 2.5"}), "error", ["substeps", "2.5"]),
+    ("create_wire radius inf", deck(WIRE, {"create_wire": "create_wire 2 loop 0 0 1 inf bond 1 mass 0.01 radius 0.02"}),
+     "error", ["radius", "inf"]),
+    ("create_wire nodes 7.5", deck(WIRE, {"create_wire": "create_wire 2 line -3 -2 0.3 3 -2 0.3 bond 1 mass 0.01 radius 0.02 nodes 7.5"}),
+     "error", ["nodes", "7.5"]),
+    ("shapes random 2.5", shapes_deck("shapes random 2.5 seed 1"), "error", ["count", "2.5"]),
+    ("shapes assign density nan", deck(BASE, {"shapes assign": "shapes assign all shape 1 density nan"}), "error", ["density", "nan"]),
+    # --- pair_style nscd: one distance twice
+    ("activation and activation/fraction", deck(BASE, {"pair_style": "pair_style nscd activation 0.1 activation/fraction 0.2"}),
+     "error", ["activation 0.1", "activation/fraction 0.2"]),
+    ("reach and reach/fraction", deck(BASE, {"pair_style": "pair_style nscd reach 0.1 reach/fraction 1"}),
+     "error", ["reach 0.1", "reach/fraction 1"]),
+    # --- values a run cannot take
+    ("a cylinder narrower than the grain", deck(BASE, {"fix floor": "fix floor all nscd/wall cylinder 0 0 0 0 0 1 0.3"},
+                                                drop=["create_atoms 1 single 2"]), "warning", ["radius 0.3"]),
+    ("grain mass 1e-300", deck(BASE, {"shapes assign": "shapes assign all shape 1 mass 1e-300"}), "error", ["1e-300"]),
+    ("plate mass 1e-300", deck(BASE, add=["fix plate all nscd/plate 3 mass 1e-300"]), "error", ["mass", "1e-300"]),
+    ("plate rate 1e12", deck(BASE, {"create_atoms 1 single 2": "create_atoms 1 single 0 0 1.5"},
+                             add=["fix plate all nscd/plate 2.5 mass 1 rate 1e12"], run="run 20"), "error", ["rate 1e+12"]),
+    ("plate rate 1e9", deck(BASE, {"create_atoms 1 single 2": "create_atoms 1 single 0 0 1.5"},
+                            add=["fix plate all nscd/plate 2.5 mass 1 rate 1e9"], run="run 20"), "error", ["rate 1e+09"]),
+    ("overlap_speed 1e6", deck(BASE, {"fix solver": "fix solver all nscd overlap_speed 1e6",
+                                      "create_atoms 1 single 2": "create_atoms 1 single 0.5 0 0.5"}, run="run 100"),
+     "error", ["overlap_speed 1000000"]),
+    # --- fix wire without contacts, wire inside a grain
+    ("fix wire without k_n among grains", deck(WIRE, {"fix w ": "fix w wire wire radius 0.02"}), "error", ["k_n"]),
+    ("fix wire k_n 0 among grains", deck(WIRE, {"fix w ": "fix w wire wire radius 0.02 k_n 0"}), "warning", ["k_n 0"]),
+    ("compute wire/contacts with k_n 0", deck(WIRE, {"fix w ": "fix w wire wire radius 0.02 k_n 0"},
+                                              add=["compute wc all wire/contacts"]), "error", ["wire/contacts", "k_n 0"]),
+    ("a wire inside a grain", deck(WIRE, {"create_wire": "create_wire 2 line -3 0 0.5 3 0 0.5 bond 1 angle 1 mass 0.01 "
+                                                         "radius 0.02 overlap ignore"}), "warning", ["inside grain ID 1"]),
+    ("create_wire takes fix wire's radius", deck(WIRE, {"create_wire": "group wire type 2\nfix w0 wire wire radius 0.02 k_n 200\n"
+                                                                       "create_wire 2 line -3 -2 0.3 3 -2 0.3 bond 1 angle 1 mass 0.01",
+                                                        "fix w ": "unfix w0\ngroup wire type 2\nfix w wire wire radius 0.02 k_n 200"}),
+     "ok", []),
+    # --- create_wire: polyline lines, overlapping wires
+    ("polyline line nan", deck(WIRE, {"create_wire": "create_wire 2 polyline nan_path.txt bond 1 mass 0.01 radius 0.02 strained yes"}),
+     "error", [":2:", "nan"]),
+    ("polyline line inf", deck(WIRE, {"create_wire": "create_wire 2 polyline inf_path.txt bond 1 mass 0.01 radius 0.02 strained yes"}),
+     "error", [":2:", "inf"]),
+    ("polyline line 1e400", deck(WIRE, {"create_wire": "create_wire 2 polyline huge_path.txt bond 1 mass 0.01 radius 0.02 strained yes"}),
+     "error", [":2:", "1e400"]),
+    ("polyline header line", deck(WIRE, {"create_wire": "create_wire 2 polyline header_path.txt bond 1 mass 0.01 radius 0.02 strained yes"}),
+     "error", [":1:", "'x'"]),
+    ("helix pitch below the diameter", deck(WIRE, {"create_wire": "create_wire 2 loop 0 0 2 2.5 turns 2 pitch 0.01 bond 1 mass 0.01 radius 0.02"}),
+     "error", ["pitch 0.01", "diameter"]),
+    ("a loop across its periodic image", deck(WIRE, {"boundary": "boundary p p f",
+                                                     "create_wire": "create_wire 2 loop 0 0 2 4.995 bond 1 mass 0.01 radius 0.02 strained yes"}),
+     "error", ["periodic image"]),
+    ("a second wire through the first", deck(WIRE, {"create_wire": "create_wire 2 line -3 -2 0.3 3 -2 0.3 bond 1 angle 1 mass 0.01 "
+                                                                   "radius 0.02\ncreate_wire 2 line 2 -4 0.3 2 3 0.3 bond 1 mass 0.01 radius 0.02"}),
+     "error", ["overlaps the wire element"]),
+    # --- data files
+    ("data file shape id 7", shapes_deck("clear", "atom_style spheropolyhedron", "shapes read cube.shapes", "read_data bad_shape.data"),
+     "error", ["shape id 7"]),
+    ("data file mass -1", shapes_deck("clear", "atom_style spheropolyhedron", "shapes read cube.shapes", "read_data bad_mass.data"),
+     "error", ["mass -1"]),
+    ("data file quaternion 0 0 0 0", shapes_deck("clear", "atom_style spheropolyhedron", "shapes read cube.shapes", "read_data bad_quat.data"),
+     "error", ["quaternion"]),
+    # --- damaged and cut restart files (damage.py, through `shell`)
+    ("restart: fix nscd count too large", damaged("solver", "nscd", "count"), "error", ["fix nscd solver", "counts 1000000000"]),
+    ("restart: fix nscd foreign mark", damaged("solver", "nscd", "mark"), "error", ["fix nscd solver", "mark"]),
+    ("restart: fix nscd NaN impulse", damaged("solver", "nscd", "nan"), "error", ["fix nscd solver", "nan"]),
+    ("restart: fix nscd size", damaged("solver", "nscd", "size"), "error", ["fix nscd solver", "bytes"]),
+    ("restart: fix nscd denormal timestep", damaged("solver", "nscd", "dt"), "error", ["fix nscd solver", "timestep is 5.00000000228"]),
+    ("restart: fix wire count too large", damaged("w", "wire", "wire_count"), "error", ["fix wire w", "counts 1000000000"]),
+    ("restart: fix wire denormal substep", damaged("w", "wire", "wire_dt"), "error", ["fix wire w", "substep is 5.00000000228"]),
+    ("restart: fix wire foreign mark", damaged("w", "wire", "mark"), "error", ["fix wire w", "mark"]),
+    ("restart: wall kind 2", damaged("floor", "nscd/wall", "kind"), "error", ["fix nscd/wall floor", "kind is 2"]),
+    ("restart: wall format 999", damaged("floor", "nscd/wall", "format"), "error", ["fix nscd/wall floor", "format 999"]),
+    ("restart: plate foreign mark", damaged("plate", "nscd/plate", "mark"), "error", ["fix nscd/plate plate", "mark"]),
+    ("restart: plate format 999", damaged("plate", "nscd/plate", "format"), "error", ["fix nscd/plate plate", "format 999"]),
+    ("restart: file cut in half", damaged("solver", "nscd", "truncate"), "error", ["restart file"]),    # LAMMPS' own
+    # --- examples/column without the restart it continues from
+    ("examples/column -var start 5 without phase 4", ["variable start index 5", f"include {EXAMPLES}/column/in.column"],
+     "error", ["column.phase4.restart"]),
 ]
 
 

@@ -428,6 +428,10 @@ GrainInertia checked_grain_inertia(const Spheropolyhedron &shape, double mass, c
                      describe(shape.volume) + "); give a value that keeps them in the range of doubles, "
                      "or change the units");
   }
+  if (mass < kMinBodyMass || mass > kMaxBodyMass)
+    throw ShapeError(given + " gives a grain of mass " + describe(mass) + ", outside the " + describe(kMinBodyMass) +
+                     " to " + describe(kMaxBodyMass) + " the solver supports (it squares impulses of the order of a "
+                     "grain's momentum); change the mass unit");
   return grain;
 }
 

@@ -68,9 +68,15 @@ struct GrainInertia {
   Vec3 inertia = Vec3::Zero();
 };
 
+// The masses a body of the contact problem may have (grains, the loading plate): the solver
+// works with squares of impulses of the order of a body's momentum, and beside a body of
+// mass 1 one of 1e-160 left it unconverged (every step, 1000 sweeps; 1e-150 was fine).
+constexpr double kMinBodyMass = 1e-100, kMaxBodyMass = 1e100;
+
 // From a density (mass = density x volume) or from the grain's mass. Throws ShapeError,
-// naming the value, unless it is finite and > 0 and the mass and the three moments come
-// out as finite normal numbers (not inf, 0 or denormal, which would make garbage motion).
+// naming the value, unless it is finite and > 0, the mass lies within kMinBodyMass ..
+// kMaxBodyMass and the three moments come out as finite normal numbers (not inf, 0 or
+// denormal, which would make garbage motion).
 GrainInertia grain_inertia_from_density(const Spheropolyhedron &shape, double density);
 GrainInertia grain_inertia_from_mass(const Spheropolyhedron &shape, double mass);
 

@@ -1,7 +1,9 @@
 #include "wire/wire_path.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 #include <sstream>
 
@@ -60,6 +62,10 @@ std::vector<double> walk(const Curve &at, double length, double chord, int max_n
 
 WireLayout layout_from(const Curve &at, const std::vector<double> &ts, double chord, bool closed)
 {
+  // a path that turns back within one element (found by fuzzing: tests/fuzz/regressions/polyline)
+  if (ts.size() < 2)
+    throw WirePathError("element length " + text(chord) + " is longer than the straight distance from the path's "
+                        "start to any of its points: no second node fits; use shorter elements");
   WireLayout layout;
   for (double t : ts) layout.nodes.push_back(at(t));
   layout.closed = closed;
@@ -163,7 +169,71 @@ void check_chord(double chord)
     throw WirePathError("element length " + text(chord) + " must be positive and finite");
 }
 
+// A decimal number as decks write them: [+-] digits [. digits] [e [+-] digits], at least one
+// digit before the exponent (no nan, inf, hexadecimal).
+bool is_decimal(const std::string &word)
+{
+  size_t k = 0, digits = 0;
+  auto run_of_digits = [&]() {
+    size_t n = 0;
+    while (k < word.size() && std::isdigit((unsigned char) word[k])) k++, n++;
+    return n;
+  };
+  if (k < word.size() && (word[k] == '+' || word[k] == '-')) k++;
+  digits += run_of_digits();
+  if (k < word.size() && word[k] == '.') {
+    k++;
+    digits += run_of_digits();
+  }
+  if (digits == 0) return false;
+  if (k < word.size() && (word[k] == 'e' || word[k] == 'E')) {
+    k++;
+    if (k < word.size() && (word[k] == '+' || word[k] == '-')) k++;
+    if (run_of_digits() == 0) return false;
+  }
+  return k == word.size();
+}
+
+// The line as quoted in a message: at most 80 characters, control bytes as '?'.
+std::string quoted_line(const std::string &line)
+{
+  std::string shown = line.substr(0, 80);
+  for (char &c : shown)
+    if ((unsigned char) c < 32 || c == 127) c = '?';
+  return "'" + shown + (line.size() > 80 ? "...'" : "'");
+}
+
 }    // namespace
+
+PolylinePath read_polyline(const std::string &text, const std::string &source_name)
+{
+  PolylinePath path;
+  std::istringstream lines(text);
+  std::string line;
+  for (long number = 1; std::getline(lines, line); number++) {
+    const std::string place = source_name + ":" + std::to_string(number) + ": ";
+    std::istringstream words(line.substr(0, line.find('#')));
+    std::vector<std::string> values;
+    for (std::string word; words >> word;) values.push_back(word);
+    if (values.empty()) continue;    // blank or comment
+    if (values.size() != 3)
+      throw WirePathError(place + "expected three numbers 'x y z', got " + std::to_string(values.size()) +
+                          " word(s): " + quoted_line(line) + " (comments start with '#')");
+    Vec3 point;
+    for (int d = 0; d < 3; d++) {
+      const std::string &word = values[d];
+      if (!is_decimal(word))
+        throw WirePathError(place + "'" + word.substr(0, 40) + "' is not a number (x y z are decimal numbers such "
+                            "as 1.5 or -2e-3): " + quoted_line(line) + " (comments start with '#')");
+      point[d] = std::strtod(word.c_str(), nullptr);
+      if (!std::isfinite(point[d]))
+        throw WirePathError(place + word.substr(0, 40) + " is beyond the range of double precision numbers "
+                            "(about 1.8e308): " + quoted_line(line));
+    }
+    path.points.push_back(point);
+  }
+  return path;
+}
 
 void loop_frame(const Vec3 &axis, Vec3 &e1, Vec3 &e2)
 {

@@ -45,6 +45,12 @@ struct PolylinePath {
   std::vector<Vec3> points;
 };
 
+// The points of a polyline file (`create_wire polyline FILE`): one point "x y z" per line,
+// three decimal numbers (as in a deck: 1, -0.5, 2.5e-3); blank lines and comments (from '#')
+// are skipped. Throws WirePathError naming the source, the line number and the line for any
+// other line, e.g. a header line, nan, inf, or a number beyond the range of doubles (1e400).
+PolylinePath read_polyline(const std::string &text, const std::string &source_name);
+
 // Unit vectors e1, e2 with (e1, e2, axis) right-handed: angle 0 of a loop points along e1.
 // For the z axis e1 = x and e2 = y; otherwise e1 is the world axis least aligned with
 // `axis`, made perpendicular to it.
@@ -59,7 +65,8 @@ struct WireLayout {
 
 // Nodes `chord` apart along the path (see the file comment). Throws WirePathError for a
 // chord that is not positive, that does not fit into the path (a loop's chord must be
-// below its diameter), or a path with coinciding points.
+// below its diameter; no point of the path as far as a chord from its start), or a path
+// with coinciding points.
 WireLayout lay_loop(const LoopPath &path, double chord);
 WireLayout lay_polyline(const PolylinePath &path, double chord);
 

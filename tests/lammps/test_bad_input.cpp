@@ -5,9 +5,15 @@
 // errors. Runs serially and under mpirun -np 2.
 #include "lammps_fixture.h"
 
+#include "fix.h"
 #include "modify.h"
+#include "nscd_restart.h"
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <fstream>
+#include <functional>
 #include <string>
 
 namespace {
@@ -58,7 +64,10 @@ class BadInputTest : public LammpsTest {
     run("log none");
     MPI_Barrier(MPI_COMM_WORLD);    // rank 0 writes the log: the others read it when it is closed
     std::ifstream in(log);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // and rank 0 truncates it in the next call only once every rank has read it
+    MPI_Barrier(MPI_COMM_WORLD);
+    return text;
   }
 };
 
@@ -123,6 +132,19 @@ TEST_F(BadInputTest, ActivationBeyondTheGrainsIsRefused)
   EXPECT_TRUE(has(error_of("run 1"), "activation 100"));
 }
 
+// One distance given twice (in its two forms, or one keyword twice) is refused naming both
+// (before: the later one won silently).
+TEST_F(BadInputTest, PairStyleDistancesGivenTwiceAreRefused)
+{
+  box();
+  std::string message = error_of("pair_style nscd activation 0.1 activation/fraction 0.2");
+  EXPECT_TRUE(has(message, "'activation 0.1' and 'activation/fraction 0.2' both set the activation distance")) << message;
+  message = error_of("pair_style nscd reach/fraction 1 reach 0.3");
+  EXPECT_TRUE(has(message, "'reach/fraction 1' and 'reach 0.3' both set the reach distance")) << message;
+  EXPECT_TRUE(has(error_of("pair_style nscd reach 0.1 reach 0.2"), "'reach 0.1' and 'reach 0.2'"));
+  EXPECT_EQ(error_of("pair_style nscd activation 0.1 reach/fraction 1"), "");
+}
+
 TEST_F(BadInputTest, NonFiniteTimestepOrLoadIsRefused)
 {
   resting_cubes();
@@ -137,6 +159,81 @@ TEST_F(BadInputTest, NonFiniteTimestepOrLoadIsRefused)
   const std::string message = error_of("run 10");
   EXPECT_TRUE(has(message, "no finite solution")) << message;
   EXPECT_TRUE(has(message, "fix plate")) << message;
+}
+
+// A cylinder narrower than the grain: warned at the start of the run naming the radius
+// (before: the run went on with a 0.41 overlap and no message).
+TEST_F(BadInputTest, CylinderNarrowerThanAGrainIsWarnedAbout)
+{
+  resting_cubes();
+  run("group first id 1");    // the cube at the origin
+  run("fix silo first nscd/wall cylinder 0 0 0 0 0 1 0.3");
+  const std::string log = log_of({"run 0"});
+  EXPECT_TRUE(has(log, "fix nscd/wall silo: grain ID 1 reaches 0.4071 into the cylinder wall of radius 0.3")) << log;
+  EXPECT_TRUE(has(log, "below the grain's bounding radius")) << log;
+  run("unfix silo");
+  run("fix silo first nscd/wall cylinder 0 0 0 0 0 1 1");    // holds the cube
+  EXPECT_FALSE(has(log_of({"run 0"}), "into the cylinder wall"));
+}
+
+// Masses the solver cannot square are refused naming them (before: a cube of mass 1e-300 on
+// another ran 1000 unconverged sweeps every step, and the warnings never named the mass).
+TEST_F(BadInputTest, MassesBeyondWhatTheSolverSquaresAreRefused)
+{
+  resting_cubes();
+  run("group top id 2");
+  std::string message = error_of("shapes assign top shape 1 mass 1e-300");
+  EXPECT_TRUE(has(message, "mass 1e-300 gives a grain of mass 1e-300, outside the 1e-100 to 1e+100")) << message;
+  EXPECT_TRUE(has(message, "change the mass unit")) << message;
+  message = error_of("fix plate all nscd/plate 3 mass 1e-300");
+  EXPECT_TRUE(has(message, "fix nscd/plate: mass 1e-300 is outside the 1e-100 to 1e+100")) << message;
+  EXPECT_EQ(error_of("shapes assign top shape 1 mass 1e-100"), "");
+}
+
+// A load rate the scene cannot take: the plate sinking into the grains stops the run, naming
+// load and rate (before: 1e9 put it 0.58 bounding radii deep silently, 1e12 through the
+// grains with only "Lost atoms" at the end).
+TEST_F(BadInputTest, PlateSinkingUnderAHugeLoadRateStopsTheRun)
+{
+  resting_cubes();
+  commands({"fix plate all nscd/plate 1.5 mass 1 rate 1e9"});
+  const std::string message = error_of("run 20");
+  EXPECT_TRUE(has(message, "fix nscd/plate plate: step 2: the plate is 0.577 of a grain's bounding radius deep")) << message;
+  EXPECT_TRUE(has(message, "rate 1e+09")) << message;
+  commands({"unfix plate", "fix plate all nscd/plate 1.5 mass 1 rate 1e3"});
+  EXPECT_EQ(error_of("run 20"), "");
+}
+
+// Numbers of the package's keywords: nan, inf, a fraction for a count, a word, a number
+// beyond doubles: each refused naming the command, the keyword and the value (before:
+// LAMMPS' parser named only the value, "Expected floating point parameter instead of 'nan'").
+TEST_F(BadInputTest, BadNumbersNameTheCommandAndKeyword)
+{
+  box();
+  EXPECT_TRUE(has(error_of("fix solver all nscd tolerance nan"), "fix nscd: tolerance 'nan' is not a finite number"));
+  EXPECT_TRUE(has(error_of("fix solver all nscd max_sweeps 2.5"), "fix nscd: max_sweeps 2.5 must be a whole number"));
+  EXPECT_TRUE(has(error_of("fix solver all nscd theta -inf"), "fix nscd: theta '-inf' is not a finite number"));
+  EXPECT_TRUE(has(error_of("fix solver all nscd relaxation abc"), "fix nscd: relaxation 'abc' is not a number"));
+  EXPECT_TRUE(has(error_of("pair_style nscd reach 1e400"), "pair_style nscd: reach 1e400 is beyond the range"));
+  run("pair_style nscd");
+  EXPECT_TRUE(has(error_of("pair_coeff * * nan"), "pair_coeff nscd: friction 'nan' is not a finite number"));
+  EXPECT_TRUE(has(error_of("fix w all nscd/wall plane 0 0 nan 0 0 1"), "fix nscd/wall: plane point z 'nan'"));
+  EXPECT_TRUE(has(error_of("fix p all nscd/plate 3 mass inf"), "fix nscd/plate: mass 'inf' is not a finite number"));
+  EXPECT_TRUE(has(error_of("shapes assign all shape 1 density nan"), "shapes assign: density 'nan'"));
+  EXPECT_TRUE(has(error_of("shapes random 2.5 seed 1"), "shapes random: count 2.5 must be a whole number"));
+}
+
+// Pushing overlapping grains apart faster than contacts are looked for ahead is refused,
+// naming the speed that fits (before: overlap_speed 1e6 ended in "Lost atoms").
+TEST_F(BadInputTest, OverlapSpeedBeyondTheLookAheadIsRefused)
+{
+  resting_cubes("fix solver all nscd overlap_speed 1e6");
+  const std::string message = error_of("run 1");
+  EXPECT_TRUE(has(message, "fix nscd: overlap_speed 1000000 separates overlapping grains by up to 1000 per step")) << message;
+  EXPECT_TRUE(has(message, "Use at most 519.6")) << message;    // (activation 0.0866 + reach 0.433) / 0.001
+  run("unfix solver");
+  run("fix solver all nscd overlap_speed 0.05");
+  EXPECT_EQ(error_of("run 1"), "");
 }
 
 TEST_F(BadInputTest, AnotherIntegratorOfTheGrainsIsRefused)
@@ -181,4 +278,407 @@ TEST_F(BadInputTest, GrainsWhoseCoresIntersectGetAWarning)
   const std::string log = log_of({"run 0"});
   EXPECT_TRUE(has(log, "grains ID 1 and 3 overlap by 0.1 (0.115 of the smaller one's bounding radius)"))
       << log;
+}
+
+// ---------------------------------------------------------------- wires
+
+class WireInputTest : public BadInputTest {
+ protected:
+  // A box (periodic as given) with one cube resting at the origin and the wire styles set up
+  // (elements 0.2 long, radius 0.02), no wire yet.
+  void wire_box(const std::string &boundary = "f f f")
+  {
+    commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+              "boundary " + boundary, "shapes read " + shape_file("cube.shapes", kCube),
+              "region box block -5 5 -5 5 -1 5",
+              "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 1 extra/angle/per/atom 1 "
+              "extra/special/per/atom 6",
+              "create_atoms 1 single 0 0 0.5", "shapes assign all shape 1 density 1", "bond_style wire",
+              "bond_coeff 1 100 0.2", "angle_style wire", "angle_coeff 1 0.01", "pair_style nscd",
+              "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+              "timestep 0.001", "group grains type 1"});
+  }
+  std::string create_wire(const std::string &path, const std::string &more = "")
+  {
+    return error_of("create_wire 2 " + path + " bond 1 angle 1 mass 0.01 radius 0.02 " + more);
+  }
+};
+
+// Lines of a polyline file that are not points stop the command naming the line (before:
+// a line whose first number could not be read was skipped as a comment, silently).
+TEST_F(WireInputTest, PolylineLinesThatAreNotPointsAreRefusedByLine)
+{
+  wire_box();
+  const std::pair<const char *, const char *> cases[] = {
+      {"0 -2 1\nnan -1 1\n1 -2 1\n", ":2: 'nan' is not a number"},
+      {"0 -2 1\ninf -1 1\n1 -2 1\n", ":2: 'inf' is not a number"},
+      {"0 -2 1\n1e400 -1 1\n1 -2 1\n", ":2: 1e400 is beyond the range"},
+      {"x y z\n0 -2 1\n1 -2 1\n", ":1: 'x' is not a number"},
+  };
+  for (const auto &c : cases) {
+    const std::string message = create_wire("polyline " + shape_file("path.txt", c.first), "strained yes");
+    EXPECT_TRUE(has(message, c.second)) << c.first << ": " << message;
+  }
+  const std::string path = shape_file("path.txt", "# x y z\n0 -2 1\n\n1 -2 1 # end\n");
+  EXPECT_EQ(create_wire("polyline " + path), "");
+}
+
+// A wire laid into itself or into another wire is refused, naming the overlap and why
+// (before: all three were accepted and the contacts blew the wires apart at the first step).
+TEST_F(WireInputTest, OverlappingWiresAreRefused)
+{
+  wire_box("p p f");
+  std::string message = create_wire("loop 0 0 2 2.5 turns 2 pitch 0.01");
+  EXPECT_TRUE(has(message, "overlaps itself by 0.03")) << message;
+  EXPECT_TRUE(has(message, "the pitch 0.01 is below the wire's diameter 0.04")) << message;
+  message = create_wire("loop 0 0 2 4.995", "strained yes");    // 10 wide, periodic in x and y
+  EXPECT_TRUE(has(message, "reaches its own periodic image")) << message;
+  EXPECT_EQ(create_wire("loop 0 0 2 2.5 turns 2 pitch 0.05"), "");    // atoms 2.. : the first wire
+  // across its turns at angle 0 (z = 2 and 2.05), 0.02 above the first
+  message = create_wire("line 2.5 -4 2.02 2.5 4 2.02");
+  EXPECT_TRUE(has(message, "overlaps the wire element between atoms ID")) << message;
+  EXPECT_TRUE(has(message, "between atoms ID 2 and 3 by 0.020")) << message;    // (the chord dips 6e-5)
+  EXPECT_EQ(create_wire("line 2.5 -4 2.2 2.5 4 2.2"), "");    // 0.1 above its end (z = 2.1): free
+  EXPECT_EQ(create_wire("line 2.5 -4 2.02 2.5 4 2.02", "overlap ignore"), "");
+}
+
+// A wire that can touch nothing in a scene with grains or walls: refused when k_n was not
+// given, warned about for 'k_n 0'; compute wire/contacts has nothing to report then (before:
+// the wire fell through the floor and the cube without a word).
+TEST_F(WireInputTest, AWireWithoutContactsAmongGrainsIsRefusedOrWarned)
+{
+  wire_box();
+  commands({"create_wire 2 line -3 -2 1 3 -2 1 bond 1 angle 1 mass 0.01 radius 0.02", "group wire type 2",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1", "fix g all gravity 1.0 vector 0 0 -1",
+            "fix solver grains nscd", "fix w wire wire radius 0.02"});
+  std::string message = error_of("run 1");
+  EXPECT_TRUE(has(message, "fix wire w: no contact stiffness k_n given")) << message;
+  EXPECT_TRUE(has(message, "grains, walls and plate")) << message;
+  commands({"unfix w", "fix w wire wire radius 0.02 k_n 0"});
+  EXPECT_TRUE(has(log_of({"run 1"}), "fix wire w: k_n 0: the wire has no contacts"));
+  run("compute wc all wire/contacts");
+  message = error_of("run 1");
+  EXPECT_TRUE(has(message, "compute wire/contacts wc: fix wire w has no contacts (k_n 0)")) << message;
+  commands({"uncompute wc", "unfix w", "fix w wire wire radius 0.02 k_n 200", "compute wc all wire/contacts"});
+  EXPECT_EQ(error_of("run 1"), "");
+}
+
+// An element inside a grain at the start of a run is warned about, naming nodes, grain and
+// depth (before: no word, and the wire was blown out at ~70 velocity units here).
+TEST_F(WireInputTest, AWireInsideAGrainAtTheStartOfARunIsWarnedAbout)
+{
+  wire_box();
+  commands({"create_wire 2 line -3 0 0.5 3 0 0.5 bond 1 angle 1 mass 0.01 radius 0.02 overlap ignore",
+            "group wire type 2", "fix solver grains nscd", "fix w wire wire radius 0.02 k_n 200"});
+  const std::string log = log_of({"run 0"});
+  EXPECT_TRUE(has(log, "lies inside grain ID 1 by 0.52 (26 wire radii) at the start of the run")) << log;
+  EXPECT_TRUE(has(log, "push it out at about 73.5")) << log;    // 0.52 sqrt(200 / 0.01)
+  // a wire resting on the cube (0.001 into it): no warning
+  commands({"delete_atoms group wire bond yes", "create_wire 2 line -3 0 1.019 3 0 1.019 bond 1 angle 1 mass 0.01",
+            "group wire type 2"});
+  EXPECT_FALSE(has(log_of({"run 0"}), "lies inside grain"));
+}
+
+// fix wire's numbers name the keyword (before: "Expected integer parameter instead of '2.5'").
+TEST_F(WireInputTest, FixWireNumbersNameTheKeyword)
+{
+  wire_box();
+  run("group wire type 2");
+  EXPECT_TRUE(has(error_of("fix w wire wire radius 0.02 k_n 200 substeps 2.5"), "fix wire: substeps 2.5 must be a whole number"));
+  EXPECT_TRUE(has(error_of("fix w wire wire radius nan"), "fix wire: radius 'nan' is not a finite number"));
+  EXPECT_TRUE(has(error_of("create_wire 2 loop 0 0 1 inf bond 1 mass 0.01 radius 0.02"), "create_wire loop: radius R 'inf' is not a finite number"));
+  EXPECT_TRUE(has(error_of("create_wire 2 line 0 0 1 1 0 1 bond 1 mass 0.01 radius 0.02 nodes 7.5"), "create_wire: nodes 7.5 must be a whole number"));
+}
+
+// create_wire's radius defaults to fix wire's (before: fix wire did not hand it over, and
+// create_wire asked for a radius although fix wire was defined).
+TEST_F(WireInputTest, CreateWireTakesTheRadiusOfFixWire)
+{
+  wire_box();
+  commands({"group wire type 2", "fix w wire wire radius 0.02 k_n 200"});
+  EXPECT_EQ(error_of("create_wire 2 line -3 -2 1 3 -2 1 bond 1 angle 1 mass 0.01"), "");
+  // and with fix wire's radius 0.5 the 0.2 elements are below the diameter
+  commands({"unfix w", "fix w wire wire radius 0.5 k_n 200"});
+  EXPECT_TRUE(has(error_of("create_wire 2 line -3 -3 1 3 -3 1 bond 1 angle 1 mass 0.01"), "below the wire's diameter 1"));
+}
+
+// ---------------------------------------------------------------- damaged restart files
+
+// A restart file of a scene with every style that writes restart data (pair nscd, fix nscd,
+// a wall, the plate, fix wire with contact memories, bond and angle wire, the atom style),
+// and ways to damage the blocks in it. Blocks are found as LAMMPS writes a global fix
+// block: the fix's ID and style as counted strings, LAMMPS' size field, then our mark.
+class RestartDamageTest : public BadInputTest {
+ protected:
+  std::string original;    // the restart file's bytes (on rank 0)
+
+  const std::vector<std::string> fixes = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0.1 0 -1",
+      "fix plate all nscd/plate 3 mass 1",
+      "fix w wire wire radius 0.02 k_n 200 gamma_n 2 k_t 150 gamma_t 1 mu_s 0.5 mu_d 0.4",
+      "fix solver grains nscd"};
+
+  // The wire lies over the cube (atom 1, mass 1.2345678901234567): after 60 steps the
+  // cube rests on the floor (solver contacts) and the wire on the cube (friction memories:
+  // gravity is tilted).
+  void write_scene()
+  {
+    commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+              "boundary f f f", "shapes read " + shape_file("cube.shapes", kCube),
+              "region box block -5 5 -5 5 -1 5",
+              "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 1 extra/angle/per/atom 1 "
+              "extra/special/per/atom 6",
+              "create_atoms 1 single 0 0 0.5", "shapes assign all shape 1 mass 1.2345678901234567",
+              "bond_style wire", "bond_coeff 1 100 0.1", "angle_style wire", "angle_coeff 1 0.01",
+              "create_wire 2 line -0.8 0 1.0201 0.8 0 1.0201 bond 1 angle 1 mass 0.01 radius 0.02",
+              "pair_style nscd", "pair_coeff * * 0.5", "timestep 0.001", "group grains type 1",
+              "group wire type 2"});
+    commands(fixes);
+    commands({"run 60", "write_restart " + scratch("scene.restart")});
+    if (rank() == 0) original = read_bytes(scratch("scene.restart"));
+  }
+
+  static std::string read_bytes(const std::string &path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+  static std::string counted(const std::string &text)
+  {
+    const std::int32_t n = static_cast<std::int32_t>(text.size() + 1);
+    return std::string(reinterpret_cast<const char *>(&n), sizeof(n)) + text + '\0';
+  }
+  // Offset of the global block of fix `id` (just after LAMMPS' size field), or npos.
+  static size_t fix_block(const std::string &bytes, const std::string &id, const std::string &style)
+  {
+    const std::string marker = counted(id) + counted(style);
+    const std::int32_t magic = LAMMPS_NS::nscd_restart::kMagic;
+    for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
+      const size_t block = at + marker.size() + sizeof(int);
+      if (block + 4 <= bytes.size() && std::memcmp(&bytes[block], &magic, 4) == 0) return block;
+    }
+    return std::string::npos;
+  }
+  template <class T> static void put(std::string &bytes, size_t at, T value)
+  {
+    std::memcpy(&bytes[at], &value, sizeof(T));
+  }
+  template <class T> static T get(const std::string &bytes, size_t at)
+  {
+    T value;
+    std::memcpy(&value, &bytes[at], sizeof(T));
+    return value;
+  }
+
+  // The file damaged by `damage` (run on rank 0), in a new LAMMPS instance: its path.
+  std::string damaged_file(const std::function<void(std::string &)> &damage)
+  {
+    if (rank() == 0) {
+      std::string bytes = original;
+      damage(bytes);
+      std::ofstream(scratch("damaged.restart"), std::ios::binary) << bytes;
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    restart_instance();
+    return scratch("damaged.restart");
+  }
+  // The message of reading the damaged file back, then redefining every fix; "" if all went through.
+  std::string error_after(const std::function<void(std::string &)> &damage)
+  {
+    std::string message = error_of("read_restart " + damaged_file(damage));
+    for (size_t k = 0; k < fixes.size() && message.empty(); k++) message = error_of(fixes[k]);
+    return message;
+  }
+  // The log of the same, which must go through.
+  std::string log_after(const std::function<void(std::string &)> &damage)
+  {
+    run("read_restart " + damaged_file(damage));
+    return log_of(fixes);
+  }
+};
+
+// Every global fix block: a foreign mark, a count too large, a stated size that does not
+// match the counts, a newer format, a value no run writes. Each is refused naming the fix,
+// its ID and what is wrong (before: a count too large ended in std::bad_alloc, a segfault
+// or reads far past the block; an unknown mark was read as "format 0").
+TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
+{
+  write_scene();
+  size_t solver = 0, wire = 0, wall = 0, plate = 0;
+  if (rank() == 0) {
+    solver = fix_block(original, "solver", "nscd");
+    wire = fix_block(original, "w", "wire");
+    wall = fix_block(original, "floor", "nscd/wall");
+    plate = fix_block(original, "plate", "nscd/plate");
+    ASSERT_NE(solver, std::string::npos);
+    ASSERT_NE(wire, std::string::npos);
+    ASSERT_NE(wall, std::string::npos);
+    ASSERT_NE(plate, std::string::npos);
+    EXPECT_GT(get<std::int64_t>(original, solver + 16), 0) << "contact records";
+    EXPECT_GT(get<std::int64_t>(original, wire + 24), 0) << "wire memories";
+  }
+  // header: mark (8 bytes), payload size (8); fix nscd: count (8), dt (8), records;
+  // fix wire: dt (8), count (8), records
+  struct Case {
+    const char *what;
+    std::function<void(std::string &)> damage;
+    std::vector<std::string> expected;
+  };
+  const std::vector<Case> cases = {
+      {"fix nscd: foreign mark", [&](std::string &b) { b[solver] ^= 0x5a; },
+       {"fix nscd solver", "does not begin with this package's mark"}},
+      {"fix nscd: count too large", [&](std::string &b) { put<std::int64_t>(b, solver + 16, 1000000000); },
+       {"fix nscd solver", "counts 1000000000 contact records"}},
+      {"fix nscd: count negative", [&](std::string &b) { put<std::int64_t>(b, solver + 16, -3); },
+       {"fix nscd solver", "counts -3 contact records"}},
+      {"fix nscd: size larger", [&](std::string &b) { put<std::int64_t>(b, solver + 8, get<std::int64_t>(b, solver + 8) + 48); },
+       {"fix nscd solver", "bytes are left"}},
+      {"fix nscd: size smaller", [&](std::string &b) { put<std::int64_t>(b, solver + 8, 20); },
+       {"fix nscd solver", "only 4 bytes are left"}},
+      {"fix nscd: format 1000", [&](std::string &b) { put<std::int32_t>(b, solver + 4, 1000); },
+       {"fix nscd solver", "format 1000", "up to 3"}},
+      {"fix nscd: format -7", [&](std::string &b) { put<std::int32_t>(b, solver + 4, -7); },
+       {"fix nscd solver", "format number -7"}},
+      {"fix nscd: a denormal timestep", [&](std::string &b) { put<double>(b, solver + 24, 5e-315); },
+       {"fix nscd solver", "the impulses' timestep is 5.00000000228"}},
+      {"fix nscd: a NaN impulse", [&](std::string &b) { put<double>(b, solver + 32 + 24, NAN); },
+       {"fix nscd solver", "contact record 1's impulse is nan"}},
+      {"fix nscd: a record of one body", [&](std::string &b) { put<std::int64_t>(b, solver + 32 + 8, get<std::int64_t>(b, solver + 32)); },
+       {"fix nscd solver", "contact record 1 joins the bodies"}},
+      {"fix wire: foreign mark", [&](std::string &b) { b[wire + 1] ^= 0x11; },
+       {"fix wire w", "does not begin with this package's mark"}},
+      {"fix wire: count too large", [&](std::string &b) { put<std::int64_t>(b, wire + 24, 1ll << 40); },
+       {"fix wire w", "counts 1099511627776 contact memories"}},
+      {"fix wire: format 4", [&](std::string &b) { put<std::int32_t>(b, wire + 4, 4); },
+       {"fix wire w", "format 4", "up to 3"}},
+      {"fix wire: a NaN substep", [&](std::string &b) { put<double>(b, wire + 16, NAN); },
+       {"fix wire w", "substep is nan"}},
+      {"fix wire: a denormal substep", [&](std::string &b) { put<double>(b, wire + 16, 5e-315); },
+       {"fix wire w", "substep is 5.00000000228"}},
+      {"fix wire: a weight of 7", [&](std::string &b) { put<double>(b, wire + 32 + 32 + 64, 7.0); },
+       {"fix wire w", "end weight 7"}},
+      {"fix nscd/wall: foreign mark", [&](std::string &b) { put<std::int32_t>(b, wall, 12345); },
+       {"fix nscd/wall floor", "does not begin with this package's mark"}},
+      {"fix nscd/wall: format 3", [&](std::string &b) { put<std::int32_t>(b, wall + 4, 3); },
+       {"fix nscd/wall floor", "format 3", "up to 2"}},
+      {"fix nscd/wall: kind 2", [&](std::string &b) { put<double>(b, wall + 16, 2.0); },
+       {"fix nscd/wall floor", "kind is 2"}},
+      {"fix nscd/wall: size 0", [&](std::string &b) { put<std::int64_t>(b, wall + 8, 0); },
+       {"fix nscd/wall floor", "ends inside the wall's kind"}},
+      {"fix nscd/plate: format 3", [&](std::string &b) { put<std::int32_t>(b, plate + 4, 3); },
+       {"fix nscd/plate plate", "format 3", "up to 2"}},
+      {"fix nscd/plate: an infinite z", [&](std::string &b) { put<double>(b, plate + 16, INFINITY); },
+       {"fix nscd/plate plate", "the plate's z is inf"}},
+      {"fix nscd/plate: a negative loading time", [&](std::string &b) { put<double>(b, plate + 32, -1.0); },
+       {"fix nscd/plate plate", "loading time is -1"}},
+  };
+  for (const Case &c : cases) {
+    const std::string message = error_after(c.damage);
+    for (const std::string &part : c.expected) EXPECT_TRUE(has(message, part)) << c.what << ": " << message;
+  }
+  // and the undamaged file reads and runs on
+  EXPECT_EQ(error_after([](std::string &) {}), "");
+  EXPECT_EQ(error_of("run 2"), "");
+}
+
+// The previous formats: fix nscd's format 2 and fix wire's format 2 had no size (their
+// counts cannot be checked): they are not read, with a warning naming the format; the
+// wall's and the plate's format 1 (fixed size) still read.
+TEST_F(RestartDamageTest, PreviousFormatsAreReadOrSkippedByName)
+{
+  write_scene();
+  auto to_previous = [&](std::string &b) {
+    // fix nscd 3 -> 2: {mark 2, int32 count, dt, records}
+    size_t at = fix_block(b, "solver", "nscd");
+    const std::int64_t count = get<std::int64_t>(b, at + 16);
+    const double dt = get<double>(b, at + 24);
+    std::string old;
+    old.append(b, at, 4);
+    const std::int32_t two = 2, count32 = (std::int32_t) count;
+    old.append(reinterpret_cast<const char *>(&two), 4).append(reinterpret_cast<const char *>(&count32), 4);
+    old.append(reinterpret_cast<const char *>(&dt), 8).append(b, at + 32, count * 48);
+    put<int>(b, at - 4, (int) old.size());
+    b.replace(at, 32 + count * 48, old);
+    // fix wire 3 -> 2: {-2.0, dt, count as a double, records}
+    at = fix_block(b, "w", "wire");
+    const std::int64_t memories = get<std::int64_t>(b, at + 24);
+    const double header[3] = {-2.0, get<double>(b, at + 16), (double) memories};
+    old.assign(reinterpret_cast<const char *>(header), sizeof(header)).append(b, at + 32, memories * 112);
+    put<int>(b, at - 4, (int) old.size());
+    b.replace(at, 32 + memories * 112, old);
+    // walls and plate 2 -> 1: {mark 1, 4 doubles}
+    for (const auto &fix : {std::make_pair("floor", "nscd/wall"), std::make_pair("plate", "nscd/plate")}) {
+      at = fix_block(b, fix.first, fix.second);
+      put<std::int32_t>(b, at + 4, 1);
+      b.erase(at + 8, 8);
+      put<int>(b, at - 4, 40);
+    }
+  };
+  const std::string log = log_after(to_previous);
+  EXPECT_TRUE(has(log, "fix nscd solver: the restart file holds the warm start in format 2")) << log;
+  EXPECT_TRUE(has(log, "fix wire w: the restart file holds the wire in format 2")) << log;
+  EXPECT_FALSE(has(log, "ERROR")) << log;
+  EXPECT_NEAR(lmp->modify->get_fix_by_id("plate")->compute_vector(0), 3.0, 1e-9);    // read: the plate's z
+  EXPECT_EQ(error_of("run 2"), "");
+}
+
+// pair_style nscd, bond_style and angle_style wire read their part of the file themselves:
+// a foreign mark, a coefficient no command accepts, a file cut inside them.
+TEST_F(RestartDamageTest, DamagedForceFieldSettingsAreRefusedByName)
+{
+  write_scene();
+  size_t pair = 0, bond = 0, angle = 0;
+  if (rank() == 0) {
+    const std::int32_t magic = LAMMPS_NS::nscd_restart::kMagic;
+    pair = original.find(std::string(reinterpret_cast<const char *>(&magic), 4));    // written first
+    const double bond_row[3] = {100.0, 0.1, 0.0};
+    bond = original.find(std::string(reinterpret_cast<const char *>(bond_row), sizeof(bond_row)));
+    const double k_rot = 0.01;
+    angle = original.find(std::string(reinterpret_cast<const char *>(&k_rot), 8), bond + 24);
+    ASSERT_NE(pair, std::string::npos);
+    ASSERT_NE(bond, std::string::npos);
+    ASSERT_NE(angle, std::string::npos);
+  }
+  // pair: mark (8), 4 doubles (32), then per type pair (1 1), (1 2), (2 2): flag, mu, e
+  std::string message = error_after([&](std::string &b) { b[pair + 2] = 'X'; });
+  EXPECT_TRUE(has(message, "pair_style nscd: the restart file's settings cannot be used")) << message;
+  EXPECT_TRUE(has(message, "mark")) << message;
+  message = error_after([&](std::string &b) { put<std::int32_t>(b, pair + 4, 2); });
+  EXPECT_TRUE(has(message, "settings are in format 2, this build reads formats up to 1")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, pair + 8 + 8, 3.0); });
+  EXPECT_TRUE(has(message, "activation fraction 3")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, pair + 40 + 4, -0.5); });
+  EXPECT_TRUE(has(message, "type pair 1 1: a friction coefficient is -0.5")) << message;
+  message = error_after([&](std::string &b) { put<std::int32_t>(b, pair + 40 + 20, 9); });
+  EXPECT_TRUE(has(message, "type pair 1 2: a type pair's flag is 9")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, bond, NAN); });
+  EXPECT_TRUE(has(message, "coefficients of bond type 1 are damaged (k_elo = nan")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, angle, -1.0); });
+  EXPECT_TRUE(has(message, "k_rot = -1 of angle type 1 is damaged")) << message;
+}
+
+// Per-atom values: the grain's mass and fix wire's per-atom Gear state. read_restart stops on
+// the rank owning the atom (error->one), so this runs on one rank only.
+TEST_F(RestartDamageTest, DamagedPerAtomValuesAreRefusedNamingTheAtom)
+{
+  if (ranks() > 1) GTEST_SKIP() << "error->one on the owning rank: serial check";
+  write_scene();
+  const int i = lmp->atom->map(2);    // a wire node: its Gear state begins with its position
+  const double start[4] = {20.0, lmp->atom->x[i][0], lmp->atom->x[i][1], lmp->atom->x[i][2]};
+  const double mass = 1.2345678901234567;
+  const size_t at_mass = original.find(std::string(reinterpret_cast<const char *>(&mass), 8));
+  ASSERT_NE(at_mass, std::string::npos);
+  std::string message = error_after([&](std::string &b) { put<double>(b, at_mass, -2.0); });
+  EXPECT_TRUE(has(message, "read_restart: atom ID 1: mass -2 must be a finite number > 0")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, at_mass, NAN); });
+  EXPECT_TRUE(has(message, "atom ID 1: mass nan")) << message;
+
+  // fix wire's values of node ID 2: its count (20), then its Gear state
+  const size_t gear = original.find(std::string(reinterpret_cast<const char *>(start), sizeof(start)));
+  ASSERT_NE(gear, std::string::npos);
+  message = error_after([&](std::string &b) { put<double>(b, gear, 1e9); });
+  EXPECT_TRUE(has(message, "fix wire w: the restart file's per-atom values of atom ID 2 are damaged")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, gear + 8 * 5, NAN); });
+  EXPECT_TRUE(has(message, "Gear state of atom ID 2 holds nan (value 5 of 19)")) << message;
 }

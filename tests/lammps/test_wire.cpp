@@ -407,49 +407,6 @@ TEST_F(WireOnGrainTest, RestartContinuesTheWireRun)
   }
 }
 
-// fix wire's global restart block begins with its format version (a negative number, after
-// the block's size); a block of another format is refused by name rather than read as this
-// one. The block is found where LAMMPS writes a global fix block: after the fix's ID and
-// style as counted strings, and checked by the version it holds (the per-atom section
-// repeats ID and style, followed by a size only).
-TEST_F(WireOnGrainTest, RestartOfAnotherFormatIsRefused)
-{
-  on_grain(0.02);
-  commands({"run 20", "write_restart " + scratch("format.restart")});
-  const double other_format = LAMMPS_NS::kRestartVersion - 1.0;
-  if (rank() == 0) {
-    std::ifstream in(scratch("format.restart"), std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    auto counted = [](const std::string &text) {
-      const std::int32_t n = static_cast<std::int32_t>(text.size() + 1);
-      return std::string(reinterpret_cast<const char *>(&n), sizeof(n)) + text + '\0';
-    };
-    const std::string marker = counted("w") + counted("wire");
-    int blocks = 0;
-    for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
-      const size_t version_at = at + marker.size() + sizeof(std::int32_t);
-      double version = 0.0;
-      if (version_at + sizeof(double) > bytes.size()) continue;
-      std::memcpy(&version, &bytes[version_at], sizeof(double));
-      if (version != LAMMPS_NS::kRestartVersion) continue;
-      std::memcpy(&bytes[version_at], &other_format, sizeof(double));
-      blocks++;
-    }
-    EXPECT_EQ(blocks, 1) << "fix wire's global restart block";
-    std::ofstream(scratch("other_format.restart"), std::ios::binary) << bytes;
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-
-  restart_instance();
-  commands({"read_restart " + scratch("other_format.restart"), "neighbor 0.3 bin"});
-  const std::string message = error_of("fix w wire wire radius 0.05 k_n 1000 gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.5 "
-                                       "mu_d 0.4 damp 0.02");
-  const std::string written = "format " + std::to_string(static_cast<int>(-other_format));
-  const std::string read = "reads format " + std::to_string(static_cast<int>(-LAMMPS_NS::kRestartVersion));
-  EXPECT_NE(message.find(written), std::string::npos) << message;
-  EXPECT_NE(message.find(read), std::string::npos) << message;
-}
-
 // Restarts move between rank counts: written on all ranks and continued on rank 0 alone,
 // and written on rank 0 alone and continued on all ranks, each time following the
 // continuation without a restart. Gravity tilted by 0.2 (below mu_s = 0.5) keeps the wire

@@ -2,6 +2,7 @@
 // the documented limits, duplicate points and names, counts, densities, damaged text.
 // Each case either works (checked against a closed form) or fails with a ShapeError
 // that names the value.
+#include "shape/grain_record.h"
 #include "shape/random_grain.h"
 #include "shape/shape_library.h"
 #include "shape_test_util.h"
@@ -315,6 +316,11 @@ TEST(GrainInertia, DensityAndMassMustGiveFiniteNormalValues)
   EXPECT_HAS(error_of([&] { grain_inertia_from_density(cube, 1e308); }), "not all finite positive numbers");
   EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, NAN); }), "mass nan is invalid");
   EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-310); }), "gives a grain of mass");
+  // normal numbers, but beyond what the solver can square (before: 1000 unconverged sweeps a step)
+  EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-300); }), "mass 1e-300 gives a grain of mass 1e-300, outside the 1e-100 to 1e+100");
+  EXPECT_HAS(error_of([&] { grain_inertia_from_density(cube, 1e101); }), "outside the 1e-100 to 1e+100");
+  EXPECT_NO_THROW(grain_inertia_from_mass(cube, 1e-100));
+  EXPECT_NO_THROW(grain_inertia_from_mass(cube, 1e100));
 }
 
 TEST(ShapeFiles, DirectoryEmptyLibraryAndControlBytesGetClearMessages)
@@ -385,4 +391,34 @@ TEST(ShapeSerialisation, NonCanonicalOrImpossibleTextIsDamaged)
   EXPECT_HAS(damaged(unnormalised.serialize()), "rotation that is not a unit quaternion");
   // The good text round-trips exactly.
   EXPECT_EQ(ShapeLibrary::deserialize(text).serialize(), text);
+}
+
+// The atom style's data-file and restart readers check each grain with check_grain_record:
+// every impossible value is refused naming it; a fine one gives the normalised orientation
+// and the moments of the shape at that mass (cube of side 1, mass 6: I = m a^2 / 6 = 1).
+TEST(GrainRecords, ImpossibleShapeIdsMassesAndOrientationsAreRefused)
+{
+  ShapeLibrary library;
+  std::istringstream text("shape cube\nradius 0\nvertices 8\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\nend\n");
+  library.read(text, "cube");
+  auto problem = [&](const GrainRecord &r, QuaternionLength length = QuaternionLength::any) {
+    return error_of([&]() { check_grain_record(library, r, length); });
+  };
+  EXPECT_NE(problem({2, 1.0, {1, 0, 0, 0}}).find("shape id 2 is outside 0..1"), std::string::npos);
+  EXPECT_NE(problem({-1, 1.0, {1, 0, 0, 0}}).find("shape id -1"), std::string::npos);
+  EXPECT_NE(problem({1, 0.0, {1, 0, 0, 0}}).find("mass 0 must be"), std::string::npos);
+  EXPECT_NE(problem({1, NAN, {1, 0, 0, 0}}).find("mass nan"), std::string::npos);
+  EXPECT_NE(problem({0, -1.0, {1, 0, 0, 0}}).find("mass -1"), std::string::npos);    // points too
+  EXPECT_NE(problem({1, 1e-320, {1, 0, 0, 0}}).find("not all finite positive"), std::string::npos);    // moments
+  EXPECT_NE(problem({1, 1.0, {0, 0, 0, 0}}).find("no usable length"), std::string::npos);
+  EXPECT_NE(problem({1, 1.0, {1e300, 1e300, 0, 0}}).find("no usable length"), std::string::npos);
+  EXPECT_NE(problem({1, 1.0, {NAN, 0, 0, 0}}).find("nan"), std::string::npos);
+  EXPECT_NE(problem({1, 1.0, {2, 0, 0, 0}}, QuaternionLength::unit).find("has length 2, not 1"), std::string::npos);
+
+  const CheckedGrain grain = check_grain_record(library, {1, 6.0, {2, 0, 0, 0}}, QuaternionLength::any);
+  EXPECT_EQ(grain.quat[0], 1.0);
+  for (int k = 0; k < 3; k++) EXPECT_NEAR(grain.inertia[k], 1.0, 1e-12);
+  EXPECT_NEAR(grain.bounding_radius, std::sqrt(0.75), 1e-12);
+  const CheckedGrain point = check_grain_record(library, {0, 0.5, {1, 0, 0, 0}}, QuaternionLength::unit);
+  EXPECT_EQ(point.inertia.norm(), 0.0);
 }

@@ -207,3 +207,51 @@ TEST(WirePath, ImpossiblePathsAreRefusedNamingTheValue)
   EXPECT_NE(message([&] { lay_polyline(shortline, 0.1); }).find("longer than the path"), std::string::npos);
   EXPECT_NE(message([&] { lay_polyline_nodes(shortline, 1); }).find("at least 2"), std::string::npos);
 }
+
+// A polyline file's lines are points, blank lines or comments; anything else stops the read
+// naming the line (before: a line whose first number could not be read, such as nan, inf,
+// 1e400 or a header, was skipped as a comment and the wire took another path).
+TEST(WirePath, PolylineFileLinesThatAreNotPointsAreRefusedByLine)
+{
+  const PolylinePath path = read_polyline("# x y z\n0 0 1\n\n  1 0 1   # corner\n1 1 1\n-2.5e-1 .5 +3.\n", "p.txt");
+  ASSERT_EQ(path.points.size(), 4u);
+  expect_vec_near(path.points[1], Vec3(1, 0, 1), 1e-300);
+  expect_vec_near(path.points[3], Vec3(-0.25, 0.5, 3.0), 1e-300);
+  auto problem = [](const std::string &text) {
+    try {
+      read_polyline(text, "p.txt");
+    } catch (const WirePathError &e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::pair<const char *, const char *> cases[] = {
+      {"0 0 1\nnan 0 1\n1 1 1\n", "p.txt:2: 'nan' is not a number"},
+      {"0 0 1\ninf 0 1\n", "p.txt:2: 'inf' is not a number"},
+      {"0 0 1\n1e400 0 1\n", "p.txt:2: 1e400 is beyond the range"},
+      {"x y z\n0 0 1\n1 0 1\n", "p.txt:1: 'x' is not a number"},
+      {"0 0 1\n1 0\n", "p.txt:2: expected three numbers 'x y z', got 2 word(s)"},
+      {"0 0 1\n1 0 1 4\n", "got 4 word(s)"},
+      {"0 0 1\n0x10 0 1\n", "'0x10' is not a number"},
+      {"0 0 1\n1.0.0 0 1\n", "'1.0.0' is not a number"},
+      {"0 0 1\n1e 0 1\n", "'1e' is not a number"},
+      {"0 0 1\n1,5 0 1\n", "'1,5' is not a number"},
+  };
+  for (const auto &c : cases) EXPECT_NE(problem(c.first).find(c.second), std::string::npos) << c.first << " -> " << problem(c.first);
+}
+
+// A path that turns back within one element has no point a chord away from its start: a
+// WirePathError (before: std::invalid_argument from the chain topology, "a chain needs at
+// least 2 nodes"; found by fuzzing, tests/fuzz/regressions/polyline).
+TEST(WirePath, PathTurningBackWithinOneElementIsRefused)
+{
+  PolylinePath path;
+  path.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.1, 0, 0.1)};    // 1.906 long, never > 1 from its start
+  try {
+    lay_polyline(path, 1.5);
+    FAIL() << "no error";
+  } catch (const WirePathError &e) {
+    EXPECT_NE(std::string(e.what()).find("no second node fits"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(lay_polyline(path, 0.9).nodes.size(), 2u);    // (0.9, 0, 0): the rest lies within 0.81 of it
+}

@@ -1,0 +1,53 @@
+// Overlaps of wire elements (spherocylinders of the wire's radius) with each other, as the
+// contact model would see them, and with grains: for create_wire, which refuses to lay a
+// wire into itself (turns of a helix closer than the wire's diameter, a loop reaching its
+// own periodic image), into a wire already there or into grains, and for fix wire, which
+// warns about elements inside grains at the start of a run. Between elements of one wire,
+// those joined by a node or by one element are exempt, as in the contact model (that is
+// the wire's own bending). Pure geometry, no LAMMPS.
+#pragma once
+
+#include "math/types.h"
+#include "shape/spheropolyhedron.h"
+#include "wire/elastic_forces.h"
+
+#include <vector>
+
+namespace nscd::wire {
+
+// Elements by their nodes' positions (unwrapped) and the topology's node indices.
+struct WirePieces {
+  std::vector<Vec3> nodes;
+  std::vector<WireElement> elements;
+};
+
+// The deepest overlap found (depth > 0), or depth 0 if none: elements a of the first set and
+// b of the second (indices into `elements`), the second set shifted by `shift` (one of the
+// periodic translations given, or zero).
+struct ElementOverlap {
+  double depth = 0.0;
+  int a = -1, b = -1;
+  Vec3 shift = Vec3::Zero();
+};
+
+// Within one wire: every pair of its elements not joined (see the file comment), and every
+// pair of an element and a copy shifted by one of `shifts` (periodic images; zero vectors
+// are ignored there).
+ElementOverlap deepest_overlap_within(const WirePieces &wire, double radius, const std::vector<Vec3> &shifts);
+
+// Between two wires (no pair exempt), the second also shifted by each of `shifts`.
+ElementOverlap deepest_overlap_between(const WirePieces &first, const WirePieces &second, double radius,
+                                       const std::vector<Vec3> &shifts);
+
+// A grain where it stands.
+struct PlacedGrain {
+  const Spheropolyhedron *shape;
+  Pose pose;
+};
+
+// The deepest overlap of the wire's elements with the grains, each grain also shifted by
+// each of `shifts` (zero vectors are ignored there): element a, grain b (indices).
+ElementOverlap deepest_overlap_with_grains(const WirePieces &wire, double radius, const std::vector<PlacedGrain> &grains,
+                                           const std::vector<Vec3> &shifts);
+
+}    // namespace nscd::wire

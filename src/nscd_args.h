@@ -1,0 +1,62 @@
+/* Numbers from deck arguments, read as LAMMPS reads them (utils::is_double, is_integer) but
+   refused with a message that names the command, the keyword and the value and says what
+   is expected: LAMMPS' own parser answers 'nan' with "Expected floating point parameter
+   instead of 'nan' in input script or data file" and '2.5' for a count with "Expected
+   integer parameter", without naming the keyword. For the .cpp files of this package (not
+   style headers: LAMMPS compiles those into its core). */
+
+#ifndef LMP_NSCD_ARGS_H
+#define LMP_NSCD_ARGS_H
+
+#include "error.h"
+#include "lammps.h"
+#include "utils.h"
+
+#include <cerrno>
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace LAMMPS_NS {
+namespace nscd_args {
+
+// The value of `key` given as `text` to the command `where` (e.g. "fix nscd", "tolerance").
+inline double number(LAMMPS *lmp, const std::string &where, const std::string &key, const std::string &text)
+{
+  std::string word = utils::lowercase(text);
+  if (!word.empty() && (word[0] == '+' || word[0] == '-')) word.erase(0, 1);
+  if (word == "nan" || word == "inf" || word == "infinity")
+    lmp->error->all(FLERR, "{}: {} '{}' is not a finite number; give a decimal number such as 0.5 or 1e-4", where,
+                    key, text);
+  if (!utils::is_double(text))
+    lmp->error->all(FLERR, "{}: {} '{}' is not a number; give a decimal number such as 0.5 or 1e-4", where, key,
+                    text);
+  errno = 0;
+  const double x = std::strtod(text.c_str(), nullptr);
+  if (errno == ERANGE || !std::isfinite(x))
+    lmp->error->all(FLERR, "{}: {} {} is beyond the range of double precision numbers (magnitudes from about "
+                    "2.2e-308 to 1.8e308); change the units or the value", where, key, text);
+  return x;
+}
+
+// A whole number (a count, a type, a seed) within [lo, hi].
+inline long long whole(LAMMPS *lmp, const std::string &where, const std::string &key, const std::string &text,
+                       long long lo = LLONG_MIN, long long hi = LLONG_MAX)
+{
+  if (!utils::is_integer(text)) {
+    if (utils::is_double(text))
+      lmp->error->all(FLERR, "{}: {} {} must be a whole number", where, key, text);
+    lmp->error->all(FLERR, "{}: {} '{}' is not a whole number", where, key, text);
+  }
+  errno = 0;
+  const long long n = std::strtoll(text.c_str(), nullptr, 10);
+  if (errno == ERANGE || n < lo || n > hi)
+    lmp->error->all(FLERR, "{}: {} {} must be between {} and {}", where, key, text, lo, hi);
+  return n;
+}
+
+}    // namespace nscd_args
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,122 @@
+/* The restart formats of this package's styles, written and read in one place
+   (nscd_restart.h has the header and the bounded reader). Each reader checks every count
+   against the block's size and every value against what the style itself accepts, and
+   throws nscd_restart::Damaged naming the problem; the styles add their name and ID.
+   Plain C++ (no LAMMPS header): tests/fuzz reads blocks with these functions. */
+
+#ifndef LMP_NSCD_RESTART_BLOCKS_H
+#define LMP_NSCD_RESTART_BLOCKS_H
+
+#include "nscd_restart.h"
+
+#include "solver/warm_start.h"
+#include "wire/contact_model.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace nscd_restart {
+
+// ---- fix nscd: the last solved impulse of every contact, for the warm start.
+// Format 3 (sized): {int64 count, double dt (the timestep they were solved with, 0 if not
+// known), count ImpulseRecords}. Formats 1 and 2 (no size: their count cannot be checked)
+// are recognised and not read.
+constexpr std::int32_t kSolverFormat = 3;
+struct SolverBlock {
+  std::int32_t format = kSolverFormat;    // as found in the block
+  bool read = true;                        // false: an older format, nothing read
+  double dt = 0.0;
+  std::vector<nscd::ImpulseRecord> records;
+};
+std::string solver_block(const SolverBlock &state);
+SolverBlock read_solver_block(const char *block, std::size_t available);
+
+// ---- fix wire: the step of the stored Gear states and the contacts' friction memories.
+// Format 3 (sized): {double dt, int64 count, count StoredContacts}. Format 2 (before the
+// common header: the double -2, dt, the count as a double, the records) is recognised: dt
+// is read, the memories are not.
+constexpr std::int32_t kWireFormat = 3;
+struct WireBlock {
+  std::int32_t format = kWireFormat;
+  bool memories_read = true;
+  double dt = 0.0;
+  std::vector<nscd::wire::StoredContact> memories;
+};
+std::string wire_block(const WireBlock &state);
+WireBlock read_wire_block(const char *block, std::size_t available);
+
+// ---- fix nscd/wall: the wall's kind (0 plane, 1 cylinder) and reference point.
+// Format 2 (sized): 4 doubles; format 1: the same 4 doubles without the size.
+constexpr std::int32_t kWallFormat = 2;
+struct WallBlock {
+  std::int32_t format = kWallFormat;
+  bool cylinder = false;
+  std::array<double, 3> point{0.0, 0.0, 0.0};
+};
+std::string wall_block(const WallBlock &state);
+WallBlock read_wall_block(const char *block, std::size_t available);
+
+// ---- fix nscd/plate: z, vz, the time its load has grown for, z at the start.
+// Format 2 (sized): 4 doubles; format 1: the same without the size.
+constexpr std::int32_t kPlateFormat = 2;
+struct PlateBlock {
+  std::int32_t format = kPlateFormat;
+  double z = 0.0, vz = 0.0, elapsed = 0.0, z_start = 0.0;
+};
+std::string plate_block(const PlateBlock &state);
+PlateBlock read_plate_block(const char *block, std::size_t available);
+
+// ---- pair_style nscd: LAMMPS gives a pair style the file, not a block. Settings:
+// {kMagic, 1}, then activation given (-1: not given), activation fraction, reach given (-1),
+// reach fraction; then per type pair i <= j: int setflag (0 or 1), and if set friction and
+// restitution. Read by `Source` (a BlockReader, or the pair's file reader), which has
+// version() and value<T>().
+constexpr std::int32_t kPairFormat = 1;
+constexpr double kMaxActivationFraction = 1.0;    // of the smallest grain's bounding radius
+constexpr double kMaxReachFraction = 20.0;
+struct PairSettings {
+  double activation_given = -1.0, activation_fraction = 0.1, reach_given = -1.0, reach_fraction = 0.5;
+};
+struct PairCoefficient {
+  std::int32_t set = 0;
+  double friction = 0.0, restitution = 0.0;
+};
+std::string pair_settings_bytes(const PairSettings &settings);
+std::string pair_coefficient_bytes(const PairCoefficient &c);
+void check_pair_settings(const PairSettings &s);        // throws Damaged
+void check_pair_coefficient(const PairCoefficient &c);    // throws Damaged
+
+template <class Source> PairSettings read_pair_settings(Source &in)
+{
+  const std::int32_t format = in.version();
+  if (format > kPairFormat)
+    throw Damaged("the settings are in format " + std::to_string(format) + ", this build reads formats up to " +
+                  std::to_string(kPairFormat) + "; use a newer build");
+  PairSettings s;
+  s.activation_given = in.template value<double>("the activation");
+  s.activation_fraction = in.template value<double>("the activation fraction");
+  s.reach_given = in.template value<double>("the reach");
+  s.reach_fraction = in.template value<double>("the reach fraction");
+  check_pair_settings(s);
+  return s;
+}
+
+template <class Source> PairCoefficient read_pair_coefficient(Source &in)
+{
+  PairCoefficient c;
+  c.set = in.template value<std::int32_t>("a type pair's flag");
+  if (c.set == 1) {
+    c.friction = in.template value<double>("a friction coefficient");
+    c.restitution = in.template value<double>("a restitution coefficient");
+  }
+  check_pair_coefficient(c);
+  return c;
+}
+
+}    // namespace nscd_restart
+}    // namespace LAMMPS_NS
+
+#endif
