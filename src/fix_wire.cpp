@@ -55,7 +55,7 @@ enum Diagnostic {
 
 
 /* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [radius R]
-                     [damp C] [substeps N|auto] [dt_sp DT] [safety S] [contacts_per_node N]
+                     [damp C] [substeps N|auto|stable] [dt_sp DT] [safety S] [contacts_per_node N]
                      [skin S] [inertia S] */
 FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
 {
@@ -130,9 +130,11 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
                "(valid keywords: {}; each takes one value)", key, value, keywords);
   if (key == "substeps") {
     requested_dt_sp = 0.0;
-    const bool automatic = strcmp(value, "auto") == 0;    // 0 inside: choose
+    fastest_stable = strcmp(value, "stable") == 0;
+    const bool automatic = fastest_stable || strcmp(value, "auto") == 0;    // 0 inside: choose
     requested_substeps = automatic ? 0 : (int) nscd_args::whole(lmp, "fix wire", key, value, INT_MIN, INT_MAX);
-    if (!automatic && requested_substeps < 1) error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto)", requested_substeps);
+    if (!automatic && requested_substeps < 1)
+      error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto, or stable)", requested_substeps);
     return;
   }
   const auto option = plain.find(key);
@@ -296,7 +298,7 @@ void FixWire::plan_substeps()
   w.node_damping = node_damping;
   if (!std::isfinite(w.node_mass)) {    // no node in the group: nothing to integrate
     lib->plan = {1, update->dt};
-    stable_dt_sp = INFINITY;
+    stable_dt_sp = automatic_dt_sp = INFINITY;
     return;
   }
   if (!(w.node_mass > 0.0))
@@ -306,6 +308,7 @@ void FixWire::plan_substeps()
   int needed = 1;
   try {
     stable_dt_sp = wire::max_stable_wire_step(w, kind, safety);
+    automatic_dt_sp = fastest_stable ? stable_dt_sp : wire::accurate_wire_step(w, kind, safety);
     needed = wire::plan_subcycle(update->dt, stable_dt_sp).substeps;
   } catch (std::exception &e) {
     error->all(FLERR, "fix wire: {}", e.what());
@@ -313,7 +316,7 @@ void FixWire::plan_substeps()
   refuse_absurd_substeps(needed);
   try {
     lib->plan = requested_dt_sp > 0.0 ? wire::plan_subcycle(update->dt, requested_dt_sp)
-                                      : wire::plan_subcycle(update->dt, stable_dt_sp, requested_substeps);
+                                      : wire::plan_subcycle(update->dt, automatic_dt_sp, requested_substeps);
     wire::check_wire_step(lib->plan.dt_sp, w, kind, safety);
   } catch (std::exception &e) {
     error->all(FLERR, "fix wire: {} (wire stability limit dt_SP max = {:.6g}). Ways out: fix wire option "
@@ -334,7 +337,7 @@ void FixWire::refuse_absurd_substeps(int needed)
   const double asked = requested_dt_sp > 0.0 ? update->dt / requested_dt_sp : (double) requested_substeps;
   if (asked > kMaxSubsteps && asked > needed)
     error->all(FLERR, "fix wire: {} asks for {:.6g} wire substeps per step, more than {}: a step would take "
-               "minutes; the stability limit needs {} (substeps auto)", requested_substeps_text(), asked,
+               "minutes; the stability limit needs {} (substeps stable)", requested_substeps_text(), asked,
                kMaxSubsteps, needed);
 }
 

@@ -83,7 +83,8 @@ class FixWire : public Fix {
   double mu_ww_s = -1.0, mu_ww_d = -1.0;           // wire-wire friction; < 0: not given
   bool contacts_recorded = false;                  // for compute wire/contacts
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
-  int requested_substeps = 0;    // 0: from dt_sp or from the stability limit
+  int requested_substeps = 0;    // 0: from dt_sp or chosen (auto or stable)
+  bool fastest_stable = false;    // substeps stable: the stable step, not the accurate one
   double requested_dt_sp = 0.0, safety = 0.9, contacts_per_node = 2.0;
   double inertia_scale = 1.0;    // the nodes' inertia over their mass (option inertia)
 
@@ -91,6 +92,7 @@ class FixWire : public Fix {
   class AngleWire *angle = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
   double stable_dt_sp = 0.0;
+  double automatic_dt_sp = 0.0;    // what substeps auto (or stable) takes
 
   // Index of each local atom (owned and ghost) among the wire nodes (-1: a grain), the
   // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.

@@ -98,6 +98,13 @@ double max_stable_wire_step(const WireStiffness &wire, GearCorrector kind, doubl
   return safety * low;
 }
 
+double accurate_wire_step(const WireStiffness &wire, GearCorrector kind, double safety)
+{
+  const double stable = max_stable_wire_step(wire, kind, safety);
+  const double omega = wire_max_angular_frequency(wire);
+  return omega > 0.0 ? std::min(stable, kAccurateFrequencyStep / omega) : stable;
+}
+
 void check_wire_step(double dt_sp, const WireStiffness &wire, GearCorrector kind, double safety)
 {
   const double dt_max = max_stable_wire_step(wire, kind, safety);

@@ -61,6 +61,16 @@ double max_stable_wire_step(const WireStiffness &wire,
                             GearCorrector kind = GearCorrector::ThreeSixteenths,
                             double safety = 0.9);
 
+// The automatic subcycle step: the stable step, and no more than kAccurateFrequencyStep /
+// w_max, so that the fastest mode gets at least 2 pi / 0.1 = 63 substeps per period. The
+// stable step alone (w_max dt ~0.28 at safety 0.9 for the papers' wire) is stable but
+// changes the outcome of the papers' column: it kept 4-7 % less of its height through the
+// walls than w_max dt = 0.094 on each of 3 seeds (benchmarks/column/README.md, "Accuracy").
+constexpr double kAccurateFrequencyStep = 0.1;
+double accurate_wire_step(const WireStiffness &wire,
+                          GearCorrector kind = GearCorrector::ThreeSixteenths,
+                          double safety = 0.9);
+
 // Throws std::invalid_argument with the numbers and the ways out if dt_sp exceeds
 // max_stable_wire_step(wire, kind, safety) or is not positive.
 void check_wire_step(double dt_sp, const WireStiffness &wire,

@@ -490,14 +490,14 @@ TEST_F(WireTest, AbsurdSubstepsAreRefusedAndExcessiveOnesWarned)
 {
   scene(straight_chain(11, 0.1, 0.01), 11, true, 1e4, 0.1, 1.0);
   run("group wire id 2:11");
-  run("fix w wire wire");
+  run("fix w wire wire substeps stable");
   run("run 0");
-  const int needed = (int) fix_value("w", 5);
+  const int needed = (int) fix_value("w", 5);    // the fewest stable
   run("unfix w");
   run("fix w wire wire substeps 1000000000");
   const std::string absurd = error_of("run 1");
   EXPECT_NE(absurd.find("substeps 1000000000 asks for 1e+09 wire substeps per step, more than 1000000"), std::string::npos) << absurd;
-  EXPECT_NE(absurd.find(fmt::format("needs {} (substeps auto)", needed)), std::string::npos) << absurd;
+  EXPECT_NE(absurd.find(fmt::format("needs {} (substeps stable)", needed)), std::string::npos) << absurd;
   run("unfix w");
   run("fix w wire wire dt_sp 1e-15");
   EXPECT_NE(error_of("run 1").find("more than"), std::string::npos);
@@ -1383,9 +1383,10 @@ TEST_F(WireOnBoundaryTest, NodeBehindAWallIsANamedError)
 
 // The papers' wire (examples/column: k_elo 5000 on elements of 0.2, nodes of 0.005, k_n
 // 2000, gamma_n 2; no node damping) lying on a frictional floor with a ball of mass 0.5
-// resting on it, at the NSCD step 0.005 and the substep count fix wire chooses (83, against
-// 247 before the rule of 2026-11). Unstable substeps would blow the wire up within a few
-// hundred steps; stable ones bring everything to rest with the floor carrying it all.
+// resting on it, at the NSCD step 0.005 and the fewest substeps fix wire takes as stable
+// (substeps stable: 83, against 247 before the rule of 2026-11; substeps auto takes 233,
+// the accurate step). Unstable substeps would blow the wire up within a few hundred steps;
+// stable ones bring everything to rest with the floor carrying it all.
 TEST_F(WireOnBoundaryTest, PapersWireUnderABallAtRestStaysStableAtTheChosenSubsteps)
 {
   const int nodes = 11;
@@ -1398,6 +1399,10 @@ TEST_F(WireOnBoundaryTest, PapersWireUnderABallAtRestStaysStableAtTheChosenSubst
             "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
             "fix w wire wire radius " + num(r_w) + " k_n 2000 gamma_n 2 k_t 1500 gamma_t 1 mu_s 0.5",
             "fix solver balls nscd tolerance 1e-9 max_sweeps 500"});
+  run("run 0");
+  EXPECT_EQ(fix_value("w", 5), 233.0);    // substeps auto: w_max dt_SP <= 0.1
+  run("unfix w");
+  run("fix w wire wire radius " + num(r_w) + " k_n 2000 gamma_n 2 k_t 1500 gamma_t 1 mu_s 0.5 substeps stable");
   double highest = 0.0;    // kinetic energy over the second half
   for (int k = 0; k < 8; k++) {
     run("run 500");

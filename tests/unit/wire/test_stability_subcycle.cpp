@@ -59,6 +59,27 @@ TEST(WireStability, PapersWireNeedsFewerSubstepsThanTheAdditiveRule)
   EXPECT_EQ(substeps, 83);
 }
 
+TEST(WireStability, AutomaticStepResolvesTheFastestModeAndStaysStable)
+{
+  // The papers' wire again: the accurate step is 0.1 / w_max (233 substeps at dt 0.005),
+  // well inside the stable one (83); a wire whose stability limit is the tighter one (heavy
+  // damping) gets the stable step.
+  WireStiffness w;
+  w.node_mass = 0.005;
+  w.element_length = 0.2;
+  w.k_elo = 5000.0;
+  w.k_rot = 0.01;
+  w.k_n = 2000.0;
+  w.gamma_contact = 2.0;
+  w.contacts_per_node = 2.0;
+  const double omega = wire_max_angular_frequency(w);
+  EXPECT_NEAR(accurate_wire_step(w) * omega, kAccurateFrequencyStep, 1e-12);
+  EXPECT_EQ(plan_subcycle(0.005, accurate_wire_step(w)).substeps, 233);
+  w.gamma_contact = 200.0;    // g_max = 160000: pure drag limits the step to 0.163 / g_max
+  EXPECT_EQ(accurate_wire_step(w), max_stable_wire_step(w));
+  EXPECT_LT(accurate_wire_step(w) * omega, kAccurateFrequencyStep);
+}
+
 TEST(WireStability, TooLargeStepIsRejectedWithTheWayOut)
 {
   WireStiffness w;
