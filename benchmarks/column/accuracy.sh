@@ -13,8 +13,11 @@
 #
 # Settings (each a set of -var's on top of the common ones):
 #   today      the substeps and fixed phases of main before 26 Nov 2026 (substeps 247, settle fixed)
-#   new        the defaults (automatic substeps: 83; phases end at rest)
-#   substeps   automatic substeps only (settle fixed): the substep rule alone
+#   new        the defaults (automatic substeps; phases end at rest)
+#   fast       the defaults with the fewest stable substeps (83 for the papers' wire)
+#   relax01    fast, and relaxations ending at an rms speed of 0.01 (v_relax; as loose as a
+#              layer's v_rest: the deck's first state-based version)
+#   substeps   the fewest stable substeps (83) only, settle fixed: the stable rule alone
 #   settle     phases ending at rest only (substeps 247): the state-based phases alone
 #   inertia10  the defaults with fix wire inertia 10
 #   dt01       the defaults with an NSCD step of 0.01 (twice the deck's)
@@ -37,7 +40,9 @@ options_of() {
   case $1 in
     today) echo "-var substeps 247 -var settle fixed" ;;
     new) echo "" ;;
-    substeps) echo "-var settle fixed" ;;
+    fast) echo "-var substeps stable" ;;
+    relax01) echo "-var substeps stable -var v_relax 0.01" ;;
+    substeps) echo "-var substeps stable -var settle fixed" ;;
     settle) echo "-var substeps 247" ;;
     inertia10) echo "-var inertia 10" ;;
     dt01) echo "-var dt 0.01" ;;
