@@ -11,6 +11,23 @@
 using namespace nscd;
 using namespace nscd::wire;
 
+// examples/column's wire: k_elo 5000 on elements of 0.2, nodes of 0.005, k_rot 0.01, soft
+// contacts k_n 2000 with gamma_n 2, 2 per node.
+namespace {
+WireStiffness papers_wire()
+{
+  WireStiffness w;
+  w.node_mass = 0.005;
+  w.element_length = 0.2;
+  w.k_elo = 5000.0;
+  w.k_rot = 0.01;
+  w.k_n = 2000.0;
+  w.gamma_contact = 2.0;
+  w.contacts_per_node = 2.0;
+  return w;
+}
+}    // namespace
+
 TEST(WireStability, FrequencyBoundAddsAxialBendingAndContactStiffness)
 {
   WireStiffness w;
@@ -38,14 +55,7 @@ TEST(WireStability, PapersWireNeedsFewerSubstepsThanTheAdditiveRule)
   // examples/column's wire: k_elo 5000 on elements of 0.2, nodes of 0.005, k_rot 0.01, soft
   // contacts k_n 2000 with gamma_n 2, 2 per node. w_max = 4648, g_max = 1600: the frequency
   // limit binds (w dt = 0.313 at g dt = 0.108, inside the region).
-  WireStiffness w;
-  w.node_mass = 0.005;
-  w.element_length = 0.2;
-  w.k_elo = 5000.0;
-  w.k_rot = 0.01;
-  w.k_n = 2000.0;
-  w.gamma_contact = 2.0;
-  w.contacts_per_node = 2.0;
+  WireStiffness w = papers_wire();
   const double omega = wire_max_angular_frequency(w), rate = wire_max_damping_rate(w);
   EXPECT_NEAR(omega, std::sqrt(4.0 * (25000.0 + 1.0 + 2000.0) / 0.005), 1e-9);
   EXPECT_NEAR(rate, 1600.0, 1e-9);
@@ -64,14 +74,7 @@ TEST(WireStability, AutomaticStepResolvesTheFastestModeAndStaysStable)
   // The papers' wire again: the accurate step is 0.1 / w_max (233 substeps at dt 0.005),
   // well inside the stable one (83); a wire whose stability limit is the tighter one (heavy
   // damping) gets the stable step.
-  WireStiffness w;
-  w.node_mass = 0.005;
-  w.element_length = 0.2;
-  w.k_elo = 5000.0;
-  w.k_rot = 0.01;
-  w.k_n = 2000.0;
-  w.gamma_contact = 2.0;
-  w.contacts_per_node = 2.0;
+  WireStiffness w = papers_wire();
   const double omega = wire_max_angular_frequency(w);
   EXPECT_NEAR(accurate_wire_step(w) * omega, kAccurateFrequencyStep, 1e-12);
   EXPECT_EQ(plan_subcycle(0.005, accurate_wire_step(w)).substeps, 233);
