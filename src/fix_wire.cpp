@@ -298,7 +298,7 @@ void FixWire::plan_substeps()
   w.node_damping = node_damping;
   if (!std::isfinite(w.node_mass)) {    // no node in the group: nothing to integrate
     lib->plan = {1, update->dt};
-    stable_dt_sp = automatic_dt_sp = INFINITY;
+    stable_dt_sp = INFINITY;
     return;
   }
   if (!(w.node_mass > 0.0))
@@ -306,6 +306,7 @@ void FixWire::plan_substeps()
                "assign GROUP shape 0 mass M'", w.node_mass);
   const auto kind = wire::GearCorrector::ThreeSixteenths;
   int needed = 1;
+  double automatic_dt_sp = 0.0;    // what substeps auto (or stable) takes
   try {
     stable_dt_sp = wire::max_stable_wire_step(w, kind, safety);
     automatic_dt_sp = fastest_stable ? stable_dt_sp : wire::accurate_wire_step(w, kind, safety);

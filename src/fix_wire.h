@@ -92,7 +92,6 @@ class FixWire : public Fix {
   class AngleWire *angle = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
   double stable_dt_sp = 0.0;
-  double automatic_dt_sp = 0.0;    // what substeps auto (or stable) takes
 
   // Index of each local atom (owned and ghost) among the wire nodes (-1: a grain), the
   // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.
