@@ -3,6 +3,7 @@
 
 #include "fix_nscd.h"
 #include "nscd_args.h"
+#include "nscd_units.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -183,6 +184,7 @@ void FixNSCD::init()
       error->all(FLERR, "fix nscd: only one fix nscd may be defined ({} and {}); one solver "
                  "handles all grains and boundaries", other->id, id);
   if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
+  nscd_units::require_plain_mechanics(lmp, "fix nscd");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
   if (update->whichflag == 2)

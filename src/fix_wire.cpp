@@ -5,6 +5,7 @@
 
 #include "fix_wire.h"
 #include "nscd_args.h"
+#include "nscd_units.h"
 #include "fix_wire_lib.h"
 
 #include "angle_wire.h"
@@ -181,6 +182,7 @@ void FixWire::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix wire does not work with 'run_style {}': it subcycles the wire itself; use "
                "'run_style verlet' (fix wire's option 'substeps' sets the wire's inner steps)", update->integrate_style);
+  nscd_units::require_plain_mechanics(lmp, "fix wire");
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");

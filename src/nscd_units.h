@@ -1,0 +1,31 @@
+/* The unit systems this package integrates in. Its integrators (fix nscd for the grains and
+   the plate, fix wire for the nodes) take force = mass x acceleration and energy = mass x
+   speed^2 without LAMMPS' conversion factors force->ftm2v and force->mvv2e, which are 1 in
+   units lj, si, cgs, micro and nano but not in real, metal or electron: there a grain would
+   fall thousands of times faster or slower than under fix nve. Refused rather than converted:
+   the package's scenes (grains of millimetres to metres) have no use for molecular units.
+   For the .cpp files of this package (not style headers: LAMMPS compiles those into its core). */
+
+#ifndef LMP_NSCD_UNITS_H
+#define LMP_NSCD_UNITS_H
+
+#include "error.h"
+#include "force.h"
+#include "lammps.h"
+#include "update.h"
+
+namespace LAMMPS_NS {
+namespace nscd_units {
+
+inline void require_plain_mechanics(LAMMPS *lmp, const char *style)
+{
+  if (lmp->force->ftm2v == 1.0 && lmp->force->mvv2e == 1.0) return;
+  lmp->error->all(FLERR, "{}: units {} convert force to mass x acceleration by a factor {:.6g}, which "
+                  "this package does not apply; use units lj, si, cgs, micro or nano (doc/units.md)",
+                  style, lmp->update->unit_style, lmp->force->ftm2v);
+}
+
+}    // namespace nscd_units
+}    // namespace LAMMPS_NS
+
+#endif
