@@ -67,9 +67,14 @@ mkdir -p "$download"
 if ! echo "$sha  $download/$name" | sha256sum -c --status 2>/dev/null; then
   rm -f "$download/$name"
   # Also asks for the .dsc and debian tarball, which the archive may not have: only the orig
-  # tarball matters, so the exit status is not trusted; the checksum below decides.
-  ( cd "$download" && apt-get "${opts[@]}" -qq --download-only source "lammps=$full_version" >&2 || true )
-  [ -f "$download/$name" ] || { echo "fetch_lammps: could not download $name" >&2; exit 1; }
+  # tarball matters, so the exit status is not trusted; the checksum below decides. apt's
+  # "404 Not Found" for the .dsc would alarm in a build log: its output is kept in a file and
+  # shown only when the tarball did not come.
+  echo "fetch_lammps: downloading $name (only the orig tarball is used)" >&2
+  ( cd "$download" && apt-get "${opts[@]}" -qq --download-only source "lammps=$full_version" \
+      >"$download/apt-source.log" 2>&1 || true )
+  [ -f "$download/$name" ] ||
+    { cat "$download/apt-source.log" >&2; echo "fetch_lammps: could not download $name" >&2; exit 1; }
   echo "$sha  $download/$name" | sha256sum -c --status ||
     { echo "fetch_lammps: $name does not match the archive's SHA-256 $sha" >&2; exit 1; }
 fi
