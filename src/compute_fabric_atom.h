@@ -11,33 +11,20 @@ ComputeStyle(fabric/atom,ComputeFabricAtom);
 #ifndef LMP_COMPUTE_FABRIC_ATOM_H
 #define LMP_COMPUTE_FABRIC_ATOM_H
 
-#include "compute.h"
-
-#include <cstdint>
+#include "compute_nscd_grain_sums.h"
 
 namespace LAMMPS_NS {
 
-class ComputeFabricAtom : public Compute {
+class ComputeFabricAtom : public ComputeNSCDGrainSums {
  public:
   ComputeFabricAtom(class LAMMPS *, int, char **);
-  ~ComputeFabricAtom() override;
-  void init() override;
   void compute_peratom() override;
-  int pack_reverse_comm(int, int, double *) override;
-  void unpack_reverse_comm(int, int *, double *) override;
-  double memory_usage() override;
 
  private:
-  class FixNSCD *fix = nullptr;
-  int nmax = 0;
   bool active_only = true;         // contacts active (default) | all
   bool with_boundaries = false;    // boundaries no (default) | yes
-  bigint last_warning_step = -1;
 
-  void clear(int n);
-  bool add(std::int64_t tag, const double *nn);
   void normalise_owned();
-  void warn_about_absent_grains(bigint absent);
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,91 @@
+/* The shared part of the per-grain computes over fix nscd's contacts (see the header). */
+
+#include "compute_nscd_grain_sums.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_nscd.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+ComputeNSCDGrainSums::ComputeNSCDGrainSums(LAMMPS *lmp, int narg, char **arg, int columns, const char *style) :
+    Compute(lmp, narg, arg), style(style)
+{
+  peratom_flag = 1;
+  size_peratom_cols = columns;
+  comm_reverse = columns;
+}
+
+ComputeNSCDGrainSums::~ComputeNSCDGrainSums()
+{
+  memory->destroy(array_atom);
+}
+
+void ComputeNSCDGrainSums::init()
+{
+  const auto fixes = modify->get_fix_by_style("^nscd$");
+  if (fixes.empty()) error->all(FLERR, "compute {} needs fix nscd (it reads that fix's contacts)", style);
+  fix = dynamic_cast<FixNSCD *>(fixes.front());
+}
+
+void ComputeNSCDGrainSums::start_sums()
+{
+  invoked_peratom = update->ntimestep;
+  if (atom->nmax > nmax) {
+    nmax = atom->nmax;
+    memory->destroy(array_atom);
+    memory->create(array_atom, nmax, size_peratom_cols, "nscd/grain_sums:array_atom");
+  }
+  for (int i = 0; i < atom->nlocal + atom->nghost; i++)
+    for (int k = 0; k < size_peratom_cols; k++) array_atom[i][k] = 0.0;
+  absent = 0;
+}
+
+/* Atoms are found by ID: at a run's start the contacts are the last solve's and local
+   indices may have changed since. */
+bool ComputeNSCDGrainSums::add(std::int64_t tag, const double *row)
+{
+  const int i = atom->map((tagint) tag);
+  if (i < 0) {
+    absent++;
+    return false;
+  }
+  for (int k = 0; k < size_peratom_cols; k++) array_atom[i][k] += row[k];
+  return true;
+}
+
+void ComputeNSCDGrainSums::finish_sums()
+{
+  comm->reverse_comm(this);
+  bigint all = 0;
+  MPI_Allreduce(&absent, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all == 0 || comm->me != 0 || last_warning_step == update->ntimestep) return;
+  last_warning_step = update->ntimestep;
+  error->warning(FLERR, "compute {} {}: {} contact ends of the last step name grains this rank no "
+                 "longer holds (atoms were redistributed since, at the start of a run); their "
+                 "contacts are left out at step {}", style, id, all, update->ntimestep);
+}
+
+int ComputeNSCDGrainSums::pack_reverse_comm(int n, int first, double *buf)
+{
+  int m = 0;
+  for (int i = first; i < first + n; i++)
+    for (int k = 0; k < size_peratom_cols; k++) buf[m++] = array_atom[i][k];
+  return m;
+}
+
+void ComputeNSCDGrainSums::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++)
+    for (int k = 0; k < size_peratom_cols; k++) array_atom[list[i]][k] += buf[m++];
+}
+
+double ComputeNSCDGrainSums::memory_usage()
+{
+  return (double) nmax * size_peratom_cols * sizeof(double);
+}

@@ -1,0 +1,45 @@
+/* A base for the per-grain computes that add up contributions of fix nscd's last solve
+   (compute fabric/atom, compute nscd/stress/atom): each contact's share goes to a grain on
+   the rank that found the contact, into the owned atom or its ghost copy, and reverse
+   communication adds the ghosts' shares to their owners. Not a style itself. */
+
+#ifndef LMP_COMPUTE_NSCD_GRAIN_SUMS_H
+#define LMP_COMPUTE_NSCD_GRAIN_SUMS_H
+
+#include "compute.h"
+
+#include <cstdint>
+
+namespace LAMMPS_NS {
+
+class ComputeNSCDGrainSums : public Compute {
+ public:
+  // `columns` numbers per grain; `style` names the compute in messages ("fabric/atom").
+  ComputeNSCDGrainSums(class LAMMPS *, int, char **, int columns, const char *style);
+  ~ComputeNSCDGrainSums() override;
+  void init() override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+ protected:
+  class FixNSCD *fix = nullptr;
+  const char *style;
+
+  // Zeroes the rows of owned and ghost atoms (growing the array as needed) and counts again.
+  void start_sums();
+  // Adds `row` to the atom of this ID on this rank (owned or ghost); false if it has none.
+  bool add(std::int64_t tag, const double *row);
+  // Brings the ghosts' shares to their owners; warns once per step about contact ends that
+  // named grains this rank no longer holds (between runs: atoms were redistributed).
+  void finish_sums();
+
+ private:
+  int nmax = 0;
+  bigint absent = 0;
+  bigint last_warning_step = -1;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,41 @@
+/* compute nscd/stress/atom: per grain, the Love-Weber stress of its contact forces,
+   sigma_i = (1/V_i) sum_c sym(f_c (x) (x_c - x_i)), from fix nscd's last solve (grains,
+   walls, plate) and fix wire's last step (wire-grain contacts). See
+   doc/compute_nscd_stress_atom.md. */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(nscd/stress/atom,ComputeNSCDStressAtom);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_NSCD_STRESS_ATOM_H
+#define LMP_COMPUTE_NSCD_STRESS_ATOM_H
+
+#include "compute_nscd_grain_sums.h"
+
+namespace LAMMPS_NS {
+
+class ComputeNSCDStressAtom : public ComputeNSCDGrainSums {
+ public:
+  ComputeNSCDStressAtom(class LAMMPS *, int, char **);
+  void init() override;
+  void compute_peratom() override;
+
+ private:
+  class FixWire *wire = nullptr;
+  bool with_boundaries = true;    // boundaries yes (default) | no
+  bool with_wire = true;          // wire yes (default: when there is a fix wire) | no
+  bool wire_asked = false;        // 'wire yes' given explicitly
+  bool per_volume = true;         // volume grain (default): a stress | none: stress x volume
+
+  void add_force(double tag, const double *force, const double *point);
+  void add_grain_contacts();
+  void add_wire_contacts();
+  void finish_owned();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
