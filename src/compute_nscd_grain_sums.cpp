@@ -10,10 +10,13 @@
 #include "modify.h"
 #include "update.h"
 
+#include <algorithm>
+
 using namespace LAMMPS_NS;
 
-ComputeNSCDGrainSums::ComputeNSCDGrainSums(LAMMPS *lmp, int narg, char **arg, int columns, const char *style) :
-    Compute(lmp, narg, arg), style(style)
+ComputeNSCDGrainSums::ComputeNSCDGrainSums(LAMMPS *lmp, int narg, char **arg, int columns, const char *style,
+                                           Combine combine) :
+    Compute(lmp, narg, arg), style(style), combine(combine)
 {
   peratom_flag = 1;
   size_peratom_cols = columns;
@@ -54,8 +57,14 @@ bool ComputeNSCDGrainSums::add(std::int64_t tag, const double *row)
     absent++;
     return false;
   }
-  for (int k = 0; k < size_peratom_cols; k++) array_atom[i][k] += row[k];
+  combine_into(array_atom[i], row);
   return true;
+}
+
+void ComputeNSCDGrainSums::combine_into(double *into, const double *row) const
+{
+  for (int k = 0; k < size_peratom_cols; k++)
+    into[k] = combine == Combine::sum ? into[k] + row[k] : std::max(into[k], row[k]);
 }
 
 void ComputeNSCDGrainSums::finish_sums()
@@ -80,9 +89,7 @@ int ComputeNSCDGrainSums::pack_reverse_comm(int n, int first, double *buf)
 
 void ComputeNSCDGrainSums::unpack_reverse_comm(int n, int *list, double *buf)
 {
-  int m = 0;
-  for (int i = 0; i < n; i++)
-    for (int k = 0; k < size_peratom_cols; k++) array_atom[list[i]][k] += buf[m++];
+  for (int i = 0; i < n; i++) combine_into(array_atom[list[i]], buf + (size_t) i * size_peratom_cols);
 }
 
 double ComputeNSCDGrainSums::memory_usage()

@@ -1,7 +1,8 @@
-/* A base for the per-grain computes that add up contributions of fix nscd's last solve
-   (compute fabric/atom, compute nscd/stress/atom): each contact's share goes to a grain on
+/* A base for the per-grain computes over the contacts of the last step (compute fabric/atom,
+   compute nscd/stress/atom, compute nscd/crush/atom): each contact's share goes to a grain on
    the rank that found the contact, into the owned atom or its ghost copy, and reverse
-   communication adds the ghosts' shares to their owners. Not a style itself. */
+   communication combines the ghosts' shares with their owners' (a sum, or the largest
+   value). Not a style itself. */
 
 #ifndef LMP_COMPUTE_NSCD_GRAIN_SUMS_H
 #define LMP_COMPUTE_NSCD_GRAIN_SUMS_H
@@ -14,8 +15,10 @@ namespace LAMMPS_NS {
 
 class ComputeNSCDGrainSums : public Compute {
  public:
+  enum class Combine { sum, largest };
   // `columns` numbers per grain; `style` names the compute in messages ("fabric/atom").
-  ComputeNSCDGrainSums(class LAMMPS *, int, char **, int columns, const char *style);
+  ComputeNSCDGrainSums(class LAMMPS *, int, char **, int columns, const char *style,
+                       Combine combine = Combine::sum);
   ~ComputeNSCDGrainSums() override;
   void init() override;
   int pack_reverse_comm(int, int, double *) override;
@@ -25,10 +28,12 @@ class ComputeNSCDGrainSums : public Compute {
  protected:
   class FixNSCD *fix = nullptr;
   const char *style;
+  const Combine combine;
 
   // Zeroes the rows of owned and ghost atoms (growing the array as needed) and counts again.
   void start_sums();
-  // Adds `row` to the atom of this ID on this rank (owned or ghost); false if it has none.
+  // Combines `row` with the atom of this ID on this rank (owned or ghost): adds it, or keeps
+  // the larger of each value; false if the rank has no such atom.
   bool add(std::int64_t tag, const double *row);
   // Brings the ghosts' shares to their owners; warns once per step about contact ends that
   // named grains this rank no longer holds (between runs: atoms were redistributed).
@@ -38,6 +43,8 @@ class ComputeNSCDGrainSums : public Compute {
   int nmax = 0;
   bigint absent = 0;
   bigint last_warning_step = -1;
+
+  void combine_into(double *into, const double *row) const;
 };
 
 }    // namespace LAMMPS_NS

@@ -1,9 +1,11 @@
-// compute nscd/stress/atom against closed forms (doc/compute_nscd_stress_atom.md): a rounded
+// compute nscd/stress/atom and nscd/crush/atom against closed forms
+// (doc/compute_nscd_stress_atom.md, doc/compute_nscd_crush_atom.md): a rounded
 // cube pressed between floor and plate carries sigma_zz V = -(plate force + m g / 2) x its
 // height; a pile at rest on a floor (frictionless side walls) has sum_i sigma_zz,i V_i =
 // -g sum_i m_i z_i (internal contacts cancel, the floor's points lie at z = 0); a ball
 // hanging on a wire carries -m g r along z from the wire's contacts. Serially and on 2 and
-// 4 ranks ("processors" puts a rank cut through the cube and the pile).
+// 4 ranks ("processors" puts a rank cut through the cube and the pile). The crushing index
+// of the cube is its floor contact's force over d^2 over the strength at its size.
 #include "lammps_fixture.h"
 
 #include "input.h"
@@ -54,6 +56,18 @@ TEST_F(StressTest, RoundedCubeBetweenFloorAndPlateCarriesTheUniaxialStress)
   EXPECT_NEAR(value("c_r[3]"), expected / kRoundedCubeVolume, 1e-8 * std::abs(expected));
   for (int k : {1, 2, 4, 5, 6}) EXPECT_NEAR(value("c_r[" + std::to_string(k) + "]"), 0.0, 1e-8) << k;
   EXPECT_EQ(value("c_rb"), 0.0);    // a grain touching only boundaries
+
+  // the largest contact force is the floor's: P + W_plate + m g
+  commands({"compute crush all nscd/crush/atom 2.0 size 0.5 weibull 3",
+            "compute uniform all nscd/crush/atom 2.0", "compute c all reduce max c_crush[*] c_uniform[4]",
+            "thermo_style custom step c_c[1]", "run 0"});
+  const double d = std::cbrt(6 * kRoundedCubeVolume / M_PI), force = plate_force + mass;
+  const double sigma = force / (d * d), strength = 2.0 * std::pow(d / 0.5, -1.0);
+  EXPECT_NEAR(value("c_c[1]"), force, 1e-8 * force);
+  EXPECT_NEAR(value("c_c[2]"), d, 1e-12);
+  EXPECT_NEAR(value("c_c[3]"), sigma, 1e-8 * sigma);
+  EXPECT_NEAR(value("c_c[4]"), sigma / strength, 1e-8 * sigma / strength);
+  EXPECT_NEAR(value("c_c[5]"), sigma / 2.0, 1e-8 * sigma);
 }
 
 // Static equilibrium of every grain: sum_c f_c + m_i g = 0, so sum_i sum_c f_c (x) (x_c - x_i)
@@ -100,10 +114,26 @@ TEST_F(StressTest, WireContactsCarryTheHangingBallsWeight)
             "fix w free wire radius 0.02 k_n 2000 gamma_n 2 k_t 1500 gamma_t 1 mu_s 0.3 damp 0.05",
             "fix nscd ball nscd", "compute s all nscd/stress/atom volume none",
             "compute sn all nscd/stress/atom volume none wire no", "compute r all reduce sum c_s[3] c_s[1]",
-            "compute rn all reduce sum c_sn[3]", "fix mean all ave/time 1 2000 5000 c_r[1] c_r[2]",
+            "compute rn all reduce sum c_sn[3]", "compute crush all nscd/crush/atom 1.0",
+            "compute f all reduce max c_crush[1]", "fix mean all ave/time 1 2000 5000 c_r[1] c_r[2] c_f",
             "thermo_style custom step c_r[1] c_rn f_mean[1]", "run 5000"});
   const double weight = value("mass(ball)");
   EXPECT_NEAR(value("f_mean[1]"), -weight * 0.5, 0.01 * weight * 0.5);
   EXPECT_NEAR(value("f_mean[2]"), 0.0, 0.01 * weight * 0.5);
   EXPECT_EQ(value("c_rn"), 0.0);
+  // the ball sits on the node at x = 0: each of its two elements carries half the weight
+  // (along normals within 5 degrees of the vertical)
+  EXPECT_NEAR(value("f_mean[3]"), weight / 2, 0.02 * weight / 2);
+}
+
+TEST_F(StressTest, BadArgumentsAreRefusedNamingTheValue)
+{
+  commands({"units lj", "atom_style spheropolyhedron", "region box block -3 3 -3 3 -1 5", "create_box 1 box"});
+  EXPECT_NE(error_of("compute c all nscd/crush/atom").find("the strength S0 is missing"), std::string::npos);
+  EXPECT_NE(error_of("compute c all nscd/crush/atom -1").find("strength -1 must be > 0"), std::string::npos);
+  EXPECT_NE(error_of("compute c all nscd/crush/atom 1 size 0.5").find("needs both 'size D0'"), std::string::npos);
+  EXPECT_NE(error_of("compute c all nscd/crush/atom 1 weibull 0").find("weibull 0 must be > 0"), std::string::npos);
+  EXPECT_NE(error_of("compute s all nscd/stress/atom volume mean").find("unknown keyword or value 'volume mean'"),
+            std::string::npos);
+  EXPECT_NE(error_of("compute s all nscd/stress/atom wire").find("keyword 'wire' needs a value"), std::string::npos);
 }
