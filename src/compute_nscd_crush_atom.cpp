@@ -8,7 +8,6 @@
 #include "error.h"
 #include "fix_nscd.h"
 #include "fix_wire.h"
-#include "modify.h"
 #include "nscd_args.h"
 
 #include "nscd_contact_pairs.h"
@@ -69,14 +68,7 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
 void ComputeNSCDCrushAtom::init()
 {
   ComputeNSCDGrainSums::init();
-  wire = nullptr;
-  if (!with_wire) return;
-  for (Fix *f : modify->get_fix_list())
-    if (auto *w = dynamic_cast<FixWire *>(f)) wire = w;
-  if (!wire && wire_asked)
-    error->all(FLERR, "compute nscd/crush/atom {}: 'wire yes' needs a fix wire; drop the keyword or define "
-               "fix wire first", id);
-  if (wire) wire->record_contacts();
+  find_wire(with_wire, wire_asked);
 }
 
 void ComputeNSCDCrushAtom::compute_peratom()

@@ -22,7 +22,6 @@ class ComputeNSCDCrushAtom : public ComputeNSCDGrainSums {
   void compute_peratom() override;
 
  private:
-  class FixWire *wire = nullptr;
   double strength = 0.0;          // sigma_0: the strength of a grain of size d_0
   double reference_size = 0.0;    // d_0 (size keyword)
   double weibull = 0.0;           // Weibull modulus m (0: no size effect)

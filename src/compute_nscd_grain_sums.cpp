@@ -6,6 +6,7 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_nscd.h"
+#include "fix_wire.h"
 #include "memory.h"
 #include "modify.h"
 #include "update.h"
@@ -33,6 +34,18 @@ void ComputeNSCDGrainSums::init()
   const auto fixes = modify->get_fix_by_style("^nscd$");
   if (fixes.empty()) error->all(FLERR, "compute {} needs fix nscd (it reads that fix's contacts)", style);
   fix = dynamic_cast<FixNSCD *>(fixes.front());
+}
+
+void ComputeNSCDGrainSums::find_wire(bool wanted, bool required)
+{
+  wire = nullptr;
+  if (!wanted) return;
+  for (Fix *f : modify->get_fix_list())
+    if (auto *w = dynamic_cast<FixWire *>(f)) wire = w;
+  if (!wire && required)
+    error->all(FLERR, "compute {} {}: 'wire yes' needs a fix wire; drop the keyword or define fix wire first",
+               style, id);
+  if (wire) wire->record_contacts();
 }
 
 void ComputeNSCDGrainSums::start_sums()

@@ -27,9 +27,13 @@ class ComputeNSCDGrainSums : public Compute {
 
  protected:
   class FixNSCD *fix = nullptr;
+  class FixWire *wire = nullptr;     // set by find_wire: the fix whose wire-grain contacts count
   const char *style;
   const Combine combine;
 
+  // After the fixes' init: the fix wire if `wanted` (an error if `required` and there is none),
+  // asked to record its contact points (it records them only when asked).
+  void find_wire(bool wanted, bool required);
   // Zeroes the rows of owned and ghost atoms (growing the array as needed) and counts again.
   void start_sums();
   // Combines `row` with the atom of this ID on this rank (owned or ghost): adds it, or keeps

@@ -8,7 +8,6 @@
 #include "error.h"
 #include "fix_nscd.h"
 #include "fix_wire.h"
-#include "modify.h"
 
 #include "shape/spheropolyhedron.h"
 #include "solver/contact_problem.h"
@@ -49,18 +48,10 @@ ComputeNSCDStressAtom::ComputeNSCDStressAtom(LAMMPS *lmp, int narg, char **arg) 
   }
 }
 
-/* After the fixes' init: fix wire records its contact points only when asked. */
 void ComputeNSCDStressAtom::init()
 {
   ComputeNSCDGrainSums::init();
-  wire = nullptr;
-  if (!with_wire) return;
-  for (Fix *f : modify->get_fix_list())
-    if (auto *w = dynamic_cast<FixWire *>(f)) wire = w;
-  if (!wire && wire_asked)
-    error->all(FLERR, "compute nscd/stress/atom {}: 'wire yes' needs a fix wire; drop the keyword or "
-               "define fix wire first", id);
-  if (wire) wire->record_contacts();
+  find_wire(with_wire, wire_asked);
 }
 
 void ComputeNSCDStressAtom::compute_peratom()

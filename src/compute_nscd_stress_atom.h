@@ -23,7 +23,6 @@ class ComputeNSCDStressAtom : public ComputeNSCDGrainSums {
   void compute_peratom() override;
 
  private:
-  class FixWire *wire = nullptr;
   bool with_boundaries = true;    // boundaries yes (default) | no
   bool with_wire = true;          // wire yes (default: when there is a fix wire) | no
   bool wire_asked = false;        // 'wire yes' given explicitly
