@@ -11,6 +11,7 @@
 #include "group.h"
 #include "utils.h"
 
+#include "math/hashed_uniform.h"
 #include "shape/random_grain.h"
 
 #include <algorithm>
@@ -26,17 +27,7 @@ using namespace LAMMPS_NS;
 namespace {
 
 // Per-atom random numbers from (seed, atom ID, stream): the same on any number of ranks.
-double hashed_uniform(std::uint64_t seed, std::uint64_t tag, std::uint64_t stream)
-{
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ULL ^ (tag + 0x632BE59BD9B4E019ULL * (stream + 1));
-  for (int round = 0; round < 2; round++) {    // splitmix64 finaliser, twice
-    z += 0x9E3779B97F4A7C15ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-  }
-  return (z >> 11) * 0x1.0p-53;    // [0, 1)
-}
+using nscd::hashed_uniform;
 
 // Uniformly random rotation (Shoemake 1992) from three uniform numbers.
 void random_quaternion(double u1, double u2, double u3, double q[4])
