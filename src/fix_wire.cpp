@@ -98,6 +98,18 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
   law.gamma_n *= dashpot_scale;
   law.gamma_t *= dashpot_scale;
   node_damping *= dashpot_scale;
+  if ((strength_spread > 0.0) != (strength_seed > 0.0) || (strength_spread > 0.0 && !(strength > 0.0)))
+    error->all(FLERR, "fix wire: strength_spread M (the Weibull modulus of the elements' strengths) goes with "
+               "'strength T' and 'seed S' (a positive integer); give all three, or only strength for one "
+               "strength for every element");
+  if (strength_seed != std::floor(strength_seed))
+    error->all(FLERR, "fix wire: seed {} must be a positive integer", strength_seed);
+  if (breaks_given && !(strength > 0.0))
+    error->all(FLERR, "fix wire: 'breaks FILE' records broken elements, but no 'strength' makes any break; give "
+               "'strength T' (the tension at which an element breaks)");
+  // a break changes the bond list: it is rebuilt at the next step (Fix leaves next_reneighbor unset)
+  next_reneighbor = -1;
+  if (strength > 0.0) force_reneighbor = 1;
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -109,6 +121,7 @@ FixWire::~FixWire()
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(gear);
+  if (breaks_file) fclose(breaks_file);
 }
 
 void FixWire::parse_option(int narg, char **arg, int &iarg)
@@ -116,19 +129,30 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   const std::string key = arg[iarg];
   const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
   const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius, damp, substeps, "
-                         "dt_sp, safety, contacts_per_node, skin, inertia";
+                         "dt_sp, safety, contacts_per_node, skin, inertia, strength, strength_spread, seed, breaks";
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
       {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
       {"mu_s", &law.mu_s}, {"mu_d", &law.mu_d}, {"radius", &wire_radius}, {"damp", &node_damping},
       {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
-      {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}, {"inertia", &inertia_scale}};
-  const bool known = plain.count(key) || key == "substeps";
+      {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}, {"inertia", &inertia_scale},
+      {"strength", &strength}, {"strength_spread", &strength_spread}, {"seed", &strength_seed}};
+  const bool known = plain.count(key) || key == "substeps" || key == "breaks";
   if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
-  if (plain.count(value) || strcmp(value, "substeps") == 0)
+  if (plain.count(value) || strcmp(value, "substeps") == 0 || strcmp(value, "breaks") == 0)
     error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
                "(valid keywords: {}; each takes one value)", key, value, keywords);
+  if (key == "breaks") {
+    breaks_given = true;
+    if (comm->me == 0 && !breaks_file) {
+      breaks_file = fopen(value, "w");
+      if (!breaks_file)
+        error->one(FLERR, "fix wire: cannot open the breaks file '{}' for writing: {}", value, utils::getsyserror());
+      fprintf(breaks_file, "# step node_id_1 node_id_2 tension x y z   (fix wire %s: broken elements)\n", id);
+    }
+    return;
+  }
   if (key == "substeps") {
     requested_dt_sp = 0.0;
     fastest_stable = strcmp(value, "stable") == 0;
@@ -143,6 +167,9 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
   if (key == "skin" && !(x > 0.0)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
+  if (key == "strength" && !(x > 0.0))
+    error->all(FLERR, "fix wire: strength {} must be > 0 (the tension at which an element breaks; leave it out "
+               "for a wire that never breaks)", x);
   if (key == "inertia" && !(x >= 1.0))
     error->all(FLERR, "fix wire: inertia {} must be >= 1 (the factor on the nodes' inertia; 1: none)", x);
   *option->second = x;
@@ -493,8 +520,13 @@ void FixWire::gather_elements()
 void FixWire::post_force(int /*vflag*/)
 {
   const double wall_start = platform::walltime(), cpu_start = platform::cputime();
+  if (strength > 0.0) break_overstretched_elements();
   const bool reindexed = neighbor->lastcall != indexed_at;
   if (reindexed) index_atoms();
+  if (topology_changed && reindexed) {    // this step's neighbour build dropped the broken elements
+    gather_elements();
+    topology_changed = false;
+  }
   load_nodes();
   if (lib->contacts) update_scene(reindexed);
   else lib->step.reactions.reset((int) lib->boundaries.size());

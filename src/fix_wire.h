@@ -19,11 +19,17 @@ FixStyle(wire,FixWire);
 #include "fix.h"
 
 #include <array>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
+
+// A wire element that broke (option strength): node IDs, tension, midpoint.
+struct WireBreak {
+  double id_a, id_b, tension, x, y, z;
+};
 
 class FixWire : public Fix {
  public:
@@ -109,7 +115,21 @@ class FixWire : public Fix {
   bool counting_comm = false;                // the subcycle's communication: counted
   std::vector<double> grain_force_buffer;    // 6 per local atom
 
-  std::array<double, 13> diagnostics{};
+  std::array<double, 14> diagnostics{};
+  static constexpr int kBrokenDiagnostic = 13;    // elements broken so far (option strength)
+
+  // option strength (fix_wire_break.cpp)
+  double strength = 0.0;            // tension at which an element breaks; 0: never
+  double strength_spread = 0.0;     // Weibull modulus of the elements' strengths; 0: all equal
+  double strength_seed = 0.0;       // their seed (option seed)
+  double element_strength(tagint a, tagint b) const;
+  FILE *breaks_file = nullptr;      // option breaks: one line per break (rank 0)
+  bool breaks_given = false;        // on every rank (the file is open on rank 0 only)
+  bigint elements_broken = 0;
+  bool topology_changed = false;    // elements broke: gather the topology after the next build
+  void break_overstretched_elements();
+  void remove_from_topology(const std::vector<struct WireBreak> &broken);
+  void report_breaks(const std::vector<struct WireBreak> &broken);
   bool warned_fast_motion = false;
 
   // fix wire's own timing of the run (printed after it): seconds, node-substeps, doubles sent
