@@ -181,7 +181,7 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   if (key == "dt_sp") requested_substeps = 0;
 }
 
-int FixWire::setmask() { return POST_FORCE; }
+int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
 double FixWire::substep() const { return lib->plan.dt_sp; }
 int FixWire::substeps() const { return lib->plan.substeps; }
 double FixWire::compute_vector(int n) { return diagnostics[n]; }

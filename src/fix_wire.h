@@ -73,6 +73,7 @@ class FixWire : public Fix {
   int substeps() const;
   // "radius" (create_wire's default), "k_n" (0: no contacts): pointers to doubles, dim 0.
   void *extract(const char *, int &) override;
+  void pre_exchange() override;
 
  private:
   struct Lib;                   // lib/wire state (fix_wire.cpp)
@@ -127,6 +128,7 @@ class FixWire : public Fix {
   bool breaks_given = false;        // on every rank (the file is open on rank 0 only)
   bigint elements_broken = 0;
   bool topology_changed = false;    // elements broke: gather the topology after the next build
+  bool specials_stale = false;      // elements broke: rebuild the special lists (pre_exchange)
   void break_overstretched_elements();
   void remove_from_topology(const std::vector<struct WireBreak> &broken);
   void report_breaks(const std::vector<struct WireBreak> &broken);

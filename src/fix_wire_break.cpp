@@ -109,9 +109,18 @@ void FixWire::remove_from_topology(const std::vector<Break> &broken)
   MPI_Allreduce(removed, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   atom->nbonds -= all[0];
   atom->nangles -= all[1];
-  // the 1-2 and 1-3 neighbours of the nodes (pair exclusions) follow the new topology
+  specials_stale = true;
+}
+
+/* The 1-2 and 1-3 neighbours of the nodes (LAMMPS' pair exclusions) follow the new topology.
+   Rebuilt before the atoms are exchanged at the reneighbouring a break asks for: in the
+   middle of a step the rebuild disturbed the ghost atoms' data (2 ranks lost atoms). */
+void FixWire::pre_exchange()
+{
+  if (!specials_stale) return;
   Special special(lmp);
   special.build();
+  specials_stale = false;
 }
 
 void FixWire::report_breaks(const std::vector<Break> &broken)

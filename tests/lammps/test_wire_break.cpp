@@ -132,6 +132,23 @@ TEST_F(WireBreakTest, RestartAfterABreakKeepsTheWireBroken)
   EXPECT_EQ(lmp->atom->natoms, 5);
 }
 
+// examples/units/in.units (grains, a double loop, floor, cylinder, plate) with a weak wire:
+// elements break among grains on any rank count without losing atoms or producing NaN (a
+// special-list rebuild in the middle of a step once shot a grain out of the box on 2 ranks).
+TEST_F(WireBreakTest, WireBreaksAmongGrainsWithoutLosingAtoms)
+{
+  commands({"variable wire_extra index \"strength 0.3 strength_spread 5 seed 3\"", "variable steps index 400",
+            "include " + std::string(NSCD_EXAMPLES_DIR) + "/units/in.units"});
+  EXPECT_EQ(lmp->atom->natoms, 136);
+  EXPECT_GT(value("f_w[14]"), 10.0);
+  EXPECT_EQ(value("bonds"), 122.0 - value("f_w[14]"));    // 123 nodes, 122 elements
+  for (tagint tag = 1; tag <= 136; tag++) {
+    const auto x = position_of(tag);
+    ASSERT_TRUE(std::isfinite(x[0] + x[1] + x[2])) << tag;
+    EXPECT_LT(std::hypot(x[0], x[1]), 3.6) << tag;    // inside the cylinder
+  }
+}
+
 TEST_F(WireBreakTest, BadOptionsAreRefused)
 {
   commands({"units lj", "atom_style hybrid spheropolyhedron angle", "region box block -1 1 -1 1 -1 1",
