@@ -319,6 +319,22 @@ Vec3 ContactProblem::local_velocity(const Row &row) const
   return u;
 }
 
+// The round-off of a contact's relative velocity: of the velocities it is the difference
+// of (the two bodies' at the point, the environment's), not of the difference itself. Two
+// grains falling together at v have a relative velocity of a few ulps of v, not 0, and no
+// impulse can make it smaller.
+double ContactProblem::round_off_velocity(const Row &row, const Vec3 &u_free) const
+{
+  const SolverBody &body_i = bodies[row.i];
+  double size = u_free.norm() + std::abs(row.normal_shift) + row.offset.norm() +
+                body_i.velocity.norm() + (row.angular_i * body_i.angular_velocity).norm();
+  if (row.j != kEnvironment) {
+    const SolverBody &body_j = bodies[row.j];
+    size += body_j.velocity.norm() + (row.angular_j * body_j.angular_velocity).norm();
+  }
+  return kRoundOffVelocity * size;
+}
+
 void ContactProblem::apply_impulse_change(const Row &row, const Vec3 &dP)
 {
   const Vec3 world = row.frame.transpose() * dP;
@@ -436,10 +452,11 @@ ResidualTerms ContactProblem::residual_terms() const
     const Vec3 u_free = u - row.delassus * row.impulse;
     const double scale = row.delassus(0, 0);
     double error = coulomb_residual(row.delassus, u_free, row.mu, row.impulse, scale);
-    // An error at the round-off of the contact's own velocities is none: when every impulse
-    // is itself round-off (a pair that needs no push), error / scale would be a ratio of two
-    // round-offs and hold the solve until max_sweeps. (NaN stays NaN.)
-    if (error <= kRoundOffVelocity * (u_free.norm() + std::abs(row.normal_shift))) error = 0.0;
+    // An error at the round-off of the contact's velocities is none: when every impulse is
+    // itself round-off (a pair that needs no push), error / scale would be a ratio of two
+    // round-offs and hold the solve until max_sweeps, or be +inf when they all came out 0.
+    // (NaN stays NaN.)
+    if (error <= round_off_velocity(row, u_free)) error = 0.0;
     terms.error_squared += error * error;
     terms.scale_squared += (scale * row.impulse).squaredNorm();
 

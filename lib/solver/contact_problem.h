@@ -280,6 +280,7 @@ class ContactProblem {
                                 double gap_theta) const;
   void relax(Row &row);
   Vec3 local_velocity(const Row &row) const;
+  double round_off_velocity(const Row &row, const Vec3 &u_free) const;
   void apply_impulse_change(const Row &row, const Vec3 &dP);
 
   void build_groups();
