@@ -24,7 +24,7 @@ from . import logs
 LOOP = re.compile(r"^Loop time of (\S+) on (\d+) procs for (\d+) steps")
 TABLE = re.compile(r"^fix (nscd|wire) \S+: time per part")
 ROW = re.compile(r"^(.+?)\s*\|\s*(\S+)\s*\|\s*(\S+)\s*\|\s*(\S+)\s*\|")
-NAMES = {1: "deposit", 2: "relax", 3: "walls", 4: "relax", 5: "load"}
+NAMES = {1: "deposit", 2: "relax", 3: "walls", 4: "relax", 5: "load"}    # examples/column's v_phase
 COMMUNICATION = ("nscd: sweep communication", "wire: communication")
 
 
@@ -125,7 +125,7 @@ def median(values):
     return ordered[middle] if len(ordered) % 2 else 0.5 * (ordered[middle - 1] + ordered[middle])
 
 
-def table_rows(phases):
+def table_rows(phases, names=NAMES):
     """The per-phase CSV rows (header first) and the 'all' row; phases of 0 steps included."""
     header = ("phase,name,steps,wall_s,ms_per_step,mean_sweeps,unconverged_fraction,"
               "largest_interpenetration,median_residual")
@@ -134,10 +134,10 @@ def table_rows(phases):
         p = phases[phase]
         if not p["steps"]:
             # only 'run 0' (or the phase's steps were in the run left out): shown, no rates
-            rows.append(f"{phase},{NAMES.get(phase, '?')},0,{p['seconds']:.1f},,,,,")
+            rows.append(f"{phase},{names.get(phase, '')},0,{p['seconds']:.1f},,,,,")
             continue
         per_step = 1000 * p["seconds"] / p["steps"]
-        rows.append(f"{phase},{NAMES.get(phase, '?')},{p['steps']},{p['seconds']:.1f},{per_step:.1f},"
+        rows.append(f"{phase},{names.get(phase, '')},{p['steps']},{p['seconds']:.1f},{per_step:.1f},"
                     f"{_or_empty(mean(p['sweeps']), '.1f')},{_or_empty(mean(p['unconverged']), '.3f')},"
                     f"{_or_empty(max(p['overlap'], default=float('nan')), '.2g')},"
                     f"{_or_empty(median(p['residual']), '.2g')}")
@@ -157,10 +157,11 @@ def run(args):
     if not phases:
         raise logs.LogError(f"{' + '.join(args.log)}: no run prints the phase column {args.phase_column} "
                             "(give --phase-column)")
-    header, rows = table_rows(phases)
+    names = NAMES if args.phase_column == "v_phase" else {}    # another deck's phases: no names
+    header, rows = table_rows(phases, names)
     print(header)
     print("\n".join(rows))
-    part_rows = part_table(phases)
+    part_rows = part_table(phases, names)
     if part_rows:
         print()
         print("\n".join(part_rows))
@@ -177,7 +178,7 @@ def run(args):
             f.write("\n".join(part_rows) + "\n")
 
 
-def part_table(phases):
+def part_table(phases, phase_names=NAMES):
     """Where the time of each phase went: each part's average over the ranks in % of the
     phase's wall time, and the slowest rank's busy share (CSV rows, header first)."""
     names = sorted({name for p in phases.values() for name in p["parts"]})
@@ -190,6 +191,6 @@ def part_table(phases):
             continue
         shares = ",".join(f"{100 * p['parts'].get(n, 0.0) / p['seconds']:.1f}" for n in names)
         busy = 100 * (1 - p["least_communication"] / p["seconds"])
-        rows.append(f"{phase},{NAMES.get(phase, '?')},{p['seconds']:.1f},{shares},{busy:.1f}")
+        rows.append(f"{phase},{phase_names.get(phase, '')},{p['seconds']:.1f},{shares},{busy:.1f}")
     return rows
 
