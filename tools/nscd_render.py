@@ -113,8 +113,9 @@ class Renderer:
                 bounds[2 * k + 1] = max(bounds[2 * k + 1], b[2 * k + 1])
         return bounds
 
-    def _slabs(self, view):
-        """Floor and plate as thin grey boxes across the frame (side views)."""
+    def _slabs(self, view, outline=False):
+        """Floor and plate as thin grey boxes across the frame (side views); outline: only their
+        edges (the column view looks down on them: a face would veil the grains)."""
         b, thick = self.frame, self.size / 100.0
         heights = [("floor", self.args.floor if self.args.floor is not None else self.bounds[4], -1)]
         if self.args.plate:
@@ -127,6 +128,11 @@ class Renderer:
             display.ColorArrayName = ["POINTS", ""]    # plain colour (the box has normals)
             display.AmbientColor = display.DiffuseColor = [0.45, 0.45, 0.5]
             display.Opacity = 0.35 if name == "floor" else 0.2    # the grains under the plate show
+            if outline:
+                display.SetRepresentationType("Outline")
+                display.AmbientColor = display.DiffuseColor = [0.2, 0.2, 0.25]
+                display.Opacity = 1.0
+                display.LineWidth = 2.0
 
     def _pixels(self, side):
         """--size, or with H = 0 the frame's height/width ratio (between 0.5 and 2; top view square)."""
@@ -224,7 +230,7 @@ class Renderer:
             tube.NumberofSides = 12
             display = pv.Show(tube, view)
             self._colour(display, view, "CELLS", "wire_energy", f"wire energy / {emax:.3g}")
-        self._slabs(view)
+        self._slabs(view, outline=True)
         self._camera(view, "column")
         return self._save(view, "column")
 
