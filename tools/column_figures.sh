@@ -113,10 +113,10 @@ load_labels() {    # LOGS... -- STEPS...: "load L (step S)" per step, "step S" w
   while [ "$1" != "--" ]; do logs+=("$1"); shift; done
   shift
   local values=()
-  if [ ${#logs[@]} -gt 0 ] && [ -z "$(analysis thermo-at "${logs[@]}" --column "$load_column" --steps "$1" 2>&1 >/dev/null)" ]; then
-    mapfile -t values < <(analysis thermo-at "${logs[@]}" --column "$load_column" --steps "$@" | awk '{print $2}')
-  else
-    echo "column_figures: WARNING: no thermo column $load_column in the log: panels labelled by step" >&2
+  [ ${#logs[@]} -gt 0 ] &&
+    mapfile -t values < <(analysis thermo-at "${logs[@]}" --column "$load_column" --steps "$@" 2>/dev/null | awk '{print $2}')
+  if ! printf '%s\n' "${values[@]}" | grep -qv '^nan$'; then
+    echo "column_figures: WARNING: no thermo column $load_column (--load-column) in the log at these steps: labelled by step" >&2
   fi
   local k=0
   for s in "$@"; do
