@@ -111,7 +111,30 @@ class TimeSeries(unittest.TestCase):
             np.testing.assert_array_equal(synthetic.csv_column(table, "v_height"), [10.0, 9.5, 9.4, 9.3])
             with _stderr() as err:
                 self.assertEqual(cli.main(["timeseries", log, "--plot", "Step:v_nothing", "-o", out]), 1)
-            self.assertIn("no run prints all of Step, v_nothing", err.getvalue())
+            self.assertIn("panel Step:v_nothing skipped: the log has no v_nothing", err.getvalue())
+            self.assertIn("no panel can be drawn", err.getvalue())
+            # a panel the log lacks is skipped with a warning, the others drawn
+            with _stderr() as err:
+                self.assertEqual(cli.main(["timeseries", log, "--plot", "Step:v_nothing", "--plot",
+                                           "Step:v_height,v_gone", "-o", out]), 0)
+            self.assertIn("panel Step:v_nothing skipped: the log has no v_nothing", err.getvalue())
+            self.assertIn("panel Step:v_height,v_gone drawn without v_gone", err.getvalue())
+            np.testing.assert_array_equal(synthetic.csv_column(synthetic.read_csv(out + ".csv"), "v_height"),
+                                          [10.0, 9.5, 9.4, 9.3])
+
+    def test_a_run_split_in_two_logs_is_joined(self):
+        first = [(["Step", "v_height"], [[0, 10.0], [100, 9.5]])]
+        second = [(["Step", "v_height"], [[100, 9.5], [200, 9.4]])]    # the restart repeats step 100
+        with tempfile.TemporaryDirectory() as d:
+            logs = []
+            for k, runs in enumerate((first, second)):
+                logs.append(os.path.join(d, f"log.{k}"))
+                with open(logs[-1], "w") as f:
+                    f.write(synthetic.log_text(runs))
+            out = os.path.join(d, "series")
+            self.assertEqual(cli.main(["timeseries"] + logs + ["--plot", "Step:v_height", "-o", out]), 0)
+            table = synthetic.read_csv(out + ".csv")
+            np.testing.assert_array_equal(synthetic.csv_column(table, "Step"), [0, 100, 200])
 
     def test_column_preset_reads_the_column_decks_thermo(self):
         names = ["Step", "v_phase", "v_height", "v_retained", "v_e_stretch", "v_e_bend", "v_e_contact",

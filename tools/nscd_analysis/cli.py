@@ -8,7 +8,7 @@ import sys
 
 import numpy as np
 
-from . import cylinder, fabric, forces, logs, vtk, wire_contacts, wire_loops
+from . import cylinder, fabric, forces, logs, phases, vtk, wire_contacts, wire_loops
 from .dumps import DumpError, read_dumps
 from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
 
@@ -61,6 +61,23 @@ def _grain_axis(args, snapshot):
     return cylinder.axis_from_centre_of_mass(pos, masses)
 
 
+def _r_axis(ax, args, scaled):
+    """Label the r axis; with --R, mark R on it. scaled: the plotted r is already r / R."""
+    radius = getattr(args, "R", None)
+    if radius is None:
+        ax.set_xlabel("r")
+        return
+    ax.axvline(1.0 if scaled else radius, color="0.4", ls="--", lw=0.8)
+    ax.annotate("R", xy=(1.0 if scaled else radius, 1.0), xycoords=("data", "axes fraction"),
+                xytext=(2, -10), textcoords="offset points", color="0.3")
+    ax.set_xlabel(f"r / R   (R = {radius:g})" if scaled else f"r   (R = {radius:g})")
+
+
+def _r_scale(args):
+    """Divide r by this on 1-D profiles: R with --R, else 1."""
+    return args.R if getattr(args, "R", None) else 1.0
+
+
 def _r_edges(args, r_values):
     return cylinder.edges(r_values, count=args.rbins, width=args.rwidth, high=args.rmax)
 
@@ -91,7 +108,7 @@ def cmd_cylavg(args):
     fig, ax = plt.subplots(figsize=(5.0, 5.0))
     mesh = ax.pcolormesh(r_edges, z_edges, np.ma.masked_invalid(mean.T), shading="flat", cmap="viridis")
     fig.colorbar(mesh, ax=ax, label=args.value)
-    ax.set_xlabel("r")
+    _r_axis(ax, args, scaled=False)
     ax.set_ylabel("z")
     ax.set_title(f"{args.value} averaged around the axis ({len(snaps)} snapshot(s))")
     fig.tight_layout()
@@ -147,7 +164,7 @@ def cmd_fabric_field(args):
     ax.set_xlim(r_edges[0], r_edges[-1])
     ax.set_ylim(z_edges[0], z_edges[-1])
     ax.set_aspect("equal")
-    ax.set_xlabel("r")
+    _r_axis(ax, args, scaled=False)
     ax.set_ylabel("z")
     ax.set_title(f"fabric in the r-z plane ({len(r)} grains, {nsnap} snapshot(s))", fontsize=9)
     fig.tight_layout()
@@ -193,13 +210,14 @@ def cmd_fabric_angle(args):
     for label, (r, _, blocks, angle, nsnap) in runs:
         count, mean, sem, tensor_angle = angle_profile(r, blocks, angle, r_edges)
         value = tensor_angle if args.method == "tensor" else mean
-        ax.errorbar(rc, value, yerr=None if args.method == "tensor" else sem, marker="o", ms=4, capsize=2, label=label)
+        ax.errorbar(rc / _r_scale(args), value, yerr=None if args.method == "tensor" else sem, marker="o", ms=4,
+                    capsize=2, label=label)
         for b in range(len(rc)):
             rows.append((label, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b], tensor_angle[b]))
         overall = np.nanmean(angle)
         summary.append(f"{label}: mean angle over all grains {overall:+.4f} rad ({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
     ax.axhline(0.0, color="0.6", lw=0.8)
-    ax.set_xlabel("r")
+    _r_axis(ax, args, scaled=True)
     ax.set_ylabel("signed angle of the largest fabric direction (rad)")
     ax.set_title("mean over grains" if args.method == "grains" else "angle of the mean tensor", fontsize=9)
     ax.legend()
@@ -229,10 +247,10 @@ def cmd_force_profile(args):
     rows = []
     for (s, axis, _), label in zip(profiles, labels):
         count, mean, sem, _ = forces.radial_profile(s, r_edges, axis, _zrange(args), args.points)
-        ax.errorbar(rc, mean, yerr=sem, marker="o", ms=4, capsize=2, label=label)
+        ax.errorbar(rc / _r_scale(args), mean, yerr=sem, marker="o", ms=4, capsize=2, label=label)
         for b in range(len(rc)):
             rows.append((label, s.timestep, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b]))
-    ax.set_xlabel("r")
+    _r_axis(ax, args, scaled=True)
     ax.set_ylabel("mean normal force between grains")
     ax.legend()
     fig.tight_layout()
@@ -291,6 +309,26 @@ COLUMN_PRESET = ["Step:v_height", "Step:v_retained", "Step:v_e_stretch,v_e_bend,
                  "v_plate_disp:v_plate_force"]
 
 
+def _panels_in_logs(paths, panels):
+    """The panels whose X and at least one Y the log(s) print; the others are left out with
+    a warning naming the missing columns. Ys a log lacks are dropped from their panel."""
+    kept = []
+    for x, ys in panels:
+        missing = logs.has_columns(paths, [x] + ys)
+        present = [y for y in ys if y not in missing]
+        if x in missing or not present:
+            print(f"nscd-analysis timeseries: WARNING: panel {x}:{','.join(ys)} skipped: the log has no "
+                  f"{', '.join(missing)}", file=sys.stderr)
+            continue
+        if missing:
+            print(f"nscd-analysis timeseries: WARNING: panel {x}:{','.join(ys)} drawn without "
+                  f"{', '.join(missing)} (not in the log)", file=sys.stderr)
+        kept.append((x, present))
+    if not kept:
+        raise logs.LogError("no panel can be drawn: the log(s) print none of the columns asked for")
+    return kept
+
+
 def cmd_timeseries(args):
     panels = []
     specs = (COLUMN_PRESET if args.preset == "column" else []) + (args.plot or [])
@@ -301,6 +339,7 @@ def cmd_timeseries(args):
         if not sep or not ys:
             raise SystemExit(f"nscd-analysis: --plot '{spec}' must be X:Y[,Y2...] (thermo column names)")
         panels.append((x, ys.split(",")))
+    panels = _panels_in_logs(args.log, panels)
     plt = _pyplot()
     fig, axes = plt.subplots(len(panels), 1, figsize=(6.0, 2.4 * len(panels)), squeeze=False)
     names = []
@@ -317,6 +356,23 @@ def cmd_timeseries(args):
     fig.tight_layout()
     table = logs.thermo_columns(args.log, names, require_all=False)
     print(_save(fig, args.out), _write_csv(args.out, names, table.tolist()))
+
+
+def cmd_thermo_at(args):
+    """One line per step: the step and the column's value at the last thermo row at or before
+    it (nan before the first row or where the column is not printed)."""
+    table = logs.thermo_columns(args.log, ["Step", args.column], require_all=False)
+    for step in args.steps:
+        rows = table[(table[:, 0] <= step) & ~np.isnan(table[:, 1])]
+        print(step, _fmt(rows[-1, 1]) if len(rows) else "nan")
+
+
+def cmd_first_step(args):
+    """The first thermo step at which the column reaches the value (nothing if never)."""
+    table = logs.thermo_columns(args.log, ["Step", args.column])
+    reached = table[table[:, 1] >= args.value, 0]
+    if len(reached):
+        print(int(reached.min()))
 
 
 # --- VTK for ParaView ---------------------------------------------------------------------
@@ -410,6 +466,8 @@ def _common(p, axis=True, bins=True):
         p.add_argument("--rbins", type=int, default=8, help="number of r bins (default 8)")
         p.add_argument("--rwidth", type=float, help="r bin width (instead of --rbins)")
         p.add_argument("--rmax", type=float, help="outer r of the last bin (default: largest r)")
+        p.add_argument("--R", type=float, help="the column's radius: r is drawn in units of R (profiles) "
+                                               "and R is marked on the r axis")
 
 
 def parser():
@@ -454,13 +512,34 @@ def parser():
     p.set_defaults(func=cmd_wire_contacts)
 
     p = sub.add_parser("timeseries", help="thermo columns of a log against each other")
-    p.add_argument("log", help="LAMMPS log file")
+    p.add_argument("log", nargs="+", help="LAMMPS log file(s); several: one run split by restarts, in order")
     p.add_argument("--plot", action="append", help="X:Y[,Y2...], one panel each")
     p.add_argument("--preset", choices=("column",),
                    help="column: height, retained fraction, wire energies vs step and plate force vs "
                         "displacement, as examples/column/in.column prints them")
     p.add_argument("--out", "-o", required=True)
     p.set_defaults(func=cmd_timeseries)
+
+    p = sub.add_parser("phases", help="per-phase table: steps, wall time, sweeps, unconverged steps, "
+                                      "interpenetration, residual, time per part")
+    p.add_argument("log", nargs="+", help="LAMMPS log file(s); several: one run split by restarts, in order")
+    p.add_argument("--phase-column", default="v_phase", help="thermo column holding the phase number "
+                                                             "(default v_phase)")
+    p.add_argument("--csv", help="write the per-phase table here")
+    p.add_argument("--parts", help="write the time-per-part table of the phases here (CSV)")
+    p.set_defaults(func=phases.run)
+
+    p = sub.add_parser("thermo-at", help="a thermo column's value at given steps (last row at or before each)")
+    p.add_argument("log", nargs="+", help="LAMMPS log file(s), in order")
+    p.add_argument("--column", required=True)
+    p.add_argument("--steps", type=int, nargs="+", required=True)
+    p.set_defaults(func=cmd_thermo_at)
+
+    p = sub.add_parser("first-step", help="the first thermo step at which a column reaches a value")
+    p.add_argument("log", nargs="+", help="LAMMPS log file(s), in order")
+    p.add_argument("--column", required=True)
+    p.add_argument("--value", type=float, required=True)
+    p.set_defaults(func=cmd_first_step)
 
     p = sub.add_parser("vtk-network", help="force network as .vtp line segments (one file per step)")
     p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")

@@ -2,6 +2,7 @@
 'Step' (or any thermo_style custom header) and 'Loop time'."""
 
 import gzip
+import os
 
 import numpy as np
 
@@ -52,13 +53,28 @@ def _numeric_row_follows(lines, k, n):
     return k + 1 < len(lines) and len(lines[k + 1].split()) == n and _all_numbers(lines[k + 1].split())
 
 
+def read_thermo_logs(paths):
+    """read_thermo of one log or of several (a run split by restarts: one log per part, in
+    the order given), the blocks of all concatenated."""
+    if isinstance(paths, (str, bytes, os.PathLike)):
+        return read_thermo(paths)
+    return [block for path in paths for block in read_thermo(path)]
+
+
+def has_columns(paths, names):
+    """The names that no run of the log(s) prints (empty: all are there)."""
+    have = {c for cols, _ in read_thermo_logs(paths) for c in cols}
+    return [n for n in names if n not in have]
+
+
 def thermo_columns(path, names, require_all=True):
-    """The named columns over the runs of the log, concatenated in run order (a run that
-    starts by repeating the previous run's last step drops that row; after reset_timestep
-    Step starts again). require_all: only runs that print all of them; else every run that
-    prints any, NaN for the others."""
+    """The named columns over the runs of the log (or of several logs, in the order given:
+    a run split by restarts), concatenated in run order (a run that starts by repeating the
+    previous run's last step drops that row; after reset_timestep Step starts again).
+    require_all: only runs that print all of them; else every run that prints any, NaN for
+    the others."""
     parts, last_step = [], None
-    blocks = read_thermo(path)
+    blocks = read_thermo_logs(path)
     for columns, data in blocks:
         present = [n in columns for n in names]
         if not len(data) or not (all(present) if require_all else any(present)):
@@ -76,6 +92,7 @@ def thermo_columns(path, names, require_all=True):
         parts.append(part)
     if not parts:
         have = sorted({c for cols, _ in blocks for c in cols})
-        raise LogError(f"{path}: no run prints {'all' if require_all else 'any'} of {', '.join(names)} "
+        where = path if isinstance(path, (str, bytes, os.PathLike)) else " + ".join(map(str, path))
+        raise LogError(f"{where}: no run prints {'all' if require_all else 'any'} of {', '.join(names)} "
                        f"(thermo columns: {', '.join(have)})")
     return np.vstack(parts)
