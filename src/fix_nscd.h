@@ -60,6 +60,9 @@ class FixNSCD : public Fix {
 
   int exchange_every = 1;       // sweeps between ghost velocity exchanges
   int warn_every = 1000;        // steps between repeated "unconverged" warnings
+  double interpenetration_warning = 0.2;    // warn past this fraction of the smallest rounding radius
+  double smallest_rounding = 0.0;           // over the group's rounded grains (0: none)
+  double warned_depth = 0.0;                // interpenetration of this run's last such warning
   double dt = 0.0;
 
   class PairNSCD *pair = nullptr;
@@ -105,6 +108,8 @@ class FixNSCD : public Fix {
   void tally_virial(int i, int j, const double *point, const double *force);
   void warn_if_unconverged();
   void warn_if_contacts_can_be_missed();
+  void find_smallest_rounding();
+  void warn_if_interpenetrating();
   void measure_kinetic_energy();
 };
 

@@ -20,11 +20,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <deque>
 
 using namespace LAMMPS_NS;
 
 namespace {
-enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, NOUTPUTS };
+enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, WINDOW_SINK, PEAK_FORCE, PEAK_DISPLACEMENT, FAILED, FAILURE_LOAD,
+              NOUTPUTS };
 }
 
 /* The plate as fix nscd and fix wire see it: a body of the contact problem. */
@@ -45,6 +47,10 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
   double friction_coefficient() const override { return friction; }
 
   double load() const { return load_start + load_rate * elapsed; }
+  double force_on_plate() const { return reaction + wire_force_in(fix.update->ntimestep).z(); }
+  double window_sink() const { return heights.empty() ? 0.0 : heights.front() - heights.back(); }
+  void record_step();
+  void fail_if_slumping();
 
   FixNSCDPlate &fix;
   double z = 0.0, vz = 0.0, z_start = 0.0;
@@ -54,13 +60,20 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
   double friction = 0.0, restitution = 0.0;
   double reaction = 0.0;                       // z force of the grains on the plate
   int body_index = -1;
+  // failure criterion: the plate sinks more than fail_sink within fail_window steps
+  int fail_window = 0;                         // 0: no criterion
+  double fail_sink = 0.0;
+  std::deque<double> heights;                  // z at the end of the last fail_window + 1 steps
+  double peak_force = 0.0, peak_displacement = 0.0;
+  bool failed = false;
+  double failure_load = 0.0;
   std::int64_t tag;
   AtomVecSpheropolyhedron *avec = nullptr;
   nscd::ContactWorkspace workspace;
 };
 
 /* fix ID group nscd/plate Z mass M [load F0] [rate R] [gravity G] [friction MU]
-   [restitution E] : the plate's lower face is the plane z = Z, the grains are below it; the
+   [restitution E] [fail_sink S fail_window N] : the plate's lower face is the plane z = Z, the grains are below it; the
    load F0 + R t pushes it down, as does its weight M G. */
 FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), plate(std::make_unique<Plate>(*this))
@@ -88,15 +101,27 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
     const double value = nscd_args::number(lmp, "fix nscd/plate", key, arg[iarg + 1]);
     if (!std::isfinite(value))
       error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
-    if (key == "load") p.load_start = value;
+    if (key == "fail_window") {
+      if (!(value >= 1.0 && value <= 1e7 && value == std::floor(value)))
+        error->all(FLERR, "fix nscd/plate: fail_window {} must be a whole number of steps from 1 to 1e7",
+                   arg[iarg + 1]);
+      p.fail_window = (int) value;
+    } else if (key == "fail_sink") {
+      if (!(value > 0.0))
+        error->all(FLERR, "fix nscd/plate: fail_sink {} must be a positive distance", arg[iarg + 1]);
+      p.fail_sink = value;
+    } else if (key == "load") p.load_start = value;
     else if (key == "rate") p.load_rate = value;
     else if (key == "gravity") p.gravity = value;
     else if (key == "friction") p.friction = value;
     else if (key == "restitution") p.restitution = value;
     else
       error->all(FLERR, "fix nscd/plate: unknown keyword '{}' (expected load, rate, gravity, "
-                 "friction, restitution)", key);
+                 "friction, restitution, fail_sink, fail_window)", key);
   }
+  if ((p.fail_window > 0) != (p.fail_sink > 0.0))
+    error->all(FLERR, "fix nscd/plate: fail_sink and fail_window go together (the plate fails when it sinks "
+               "more than fail_sink within fail_window steps); give both or neither");
   if (!(p.friction >= 0.0) || !std::isfinite(p.friction))
     error->all(FLERR, "fix nscd/plate: friction {} must be finite and >= 0", p.friction);
   if (!(p.restitution >= 0.0 && p.restitution <= 1.0))
@@ -184,6 +209,30 @@ void FixNSCDPlate::Plate::take_body(const nscd::SolverBody &solved, double dt, d
   z += dt * ((1.0 - theta) * vz + theta * v_new);
   vz = v_new;
   elapsed += dt;
+  record_step();
+}
+
+/* The failure criterion sees every step: the sink over a sliding window of steps, not the
+   plate's state at the few moments a deck looks (a slump that starts and stops between two
+   looks leaves the plate at rest and only a little lower). */
+void FixNSCDPlate::Plate::record_step()
+{
+  if (fail_window <= 0) return;
+  heights.push_back(z);
+  while ((int) heights.size() > fail_window + 1) heights.pop_front();
+  fail_if_slumping();
+}
+
+void FixNSCDPlate::Plate::fail_if_slumping()
+{
+  if (failed || !(window_sink() > fail_sink)) return;
+  failed = true;
+  failure_load = load();
+  if (fix.comm->me == 0)
+    utils::logmesg(fix.lmp, "fix nscd/plate {}: failure at step {}: the plate sank {:.4g} within the last {} "
+                   "steps (fail_sink {:.4g}) under a load of {:.6g}; peak force so far {:.6g} at displacement "
+                   "{:.4g}\n", fix.id, fix.update->ntimestep, window_sink(), (int) heights.size() - 1, fail_sink,
+                   failure_load, peak_force, peak_displacement);
 }
 
 void FixNSCDPlate::Plate::take_impulses(const nscd::Contact *first, int count, double dt)
@@ -192,6 +241,10 @@ void FixNSCDPlate::Plate::take_impulses(const nscd::Contact *first, int count, d
   for (int k = 0; k < count; k++) mine -= first[k].impulse.z();    // on the plate
   mine /= dt;
   MPI_Allreduce(&mine, &reaction, 1, MPI_DOUBLE, MPI_SUM, fix.world);
+  if (force_on_plate() > peak_force) {    // the peak of the load-displacement curve
+    peak_force = force_on_plate();
+    peak_displacement = z - z_start;
+  }
   stop_if_sinking(first, count);
 }
 
@@ -224,9 +277,14 @@ double FixNSCDPlate::compute_vector(int n)
   switch (n) {
     case Z: return p.z;
     case VZ: return p.vz;
-    case REACTION: return p.reaction + p.wire_force_in(update->ntimestep).z();    // grains + wire
+    case REACTION: return p.force_on_plate();    // grains + wire
     case LOAD: return p.load();
     case DISPLACEMENT: return p.z - p.z_start;
+    case WINDOW_SINK: return p.window_sink();
+    case PEAK_FORCE: return p.peak_force;
+    case PEAK_DISPLACEMENT: return p.peak_displacement;
+    case FAILED: return p.failed ? 1.0 : 0.0;
+    case FAILURE_LOAD: return p.failure_load;
   }
   return 0.0;
 }

@@ -47,7 +47,7 @@ for run in "${runs[@]}"; do
   stretch=$(field "$log" '^phase 4 done:.*wire stretch energy ([^,]+),.*')
   load=$(field "$log" '^phase 5 done: load ([^,]+),.*')
   grep -q "^phase 5: no failure" "$log" && load=">$load (no failure)"
-  peak=$(field "$log" '^phase 5 done:.*peak of the checks ([^)]+)\).*')
+  peak=$(field "$log" '^phase 5 done:.*\(peak ([^ ]+) at.*')
   [ -n "$value" ] || { param=defaults; value=-; }
   echo "$param,$value,$seed,$h_before,$h_after,$f_before,$f_after,$stretch,$load,$peak,$(( SECONDS - t0 ))" >> study.csv
   echo "study: $name done in $(( SECONDS - t0 )) s"

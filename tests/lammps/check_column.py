@@ -15,7 +15,7 @@ Fails (exit 1, naming the check) unless, in every run:
     rows under load below 2 % (one row may be off while the column settles under a new
     load and the plate accelerates: force = load + M g + M a); a column that gives way
     under the load is not quasi-static, and then the deck must have seen the plate sink
-    faster than its fail_speed or deeper than its fail_strain (the 26-grain ring column of
+    more than its fail_sink within its fail_window steps, or deeper than its fail_strain (the 26-grain ring column of
     the smoke test has done so at load 20-30 since 26 Nov 2026, when the relaxations became
     stricter and the wire substep the accurate one);
 and with the wire:
@@ -40,7 +40,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from nscd_analysis import logs  # noqa: E402
 
 PLATE_MASS, GRAVITY, R_W = 10.0, 1.0, 0.05
-FAIL_SPEED, FAIL_STRAIN = 0.2, 0.15    # the deck's failure criterion (its defaults)
+FAIL_SINK, FAIL_STRAIN = 0.05, 0.15    # the deck's failure criterion (its defaults)
 failures = []
 
 
@@ -79,12 +79,13 @@ def check_run(path, label):
     failed = "phase 5: no failure" not in open(path).read()
     if len(load) and failed:
         # A column that gives way is not quasi-static: then the deck must have seen the plate
-        # sink faster than fail_speed (its failure criterion), or by more than fail_strain.
+        # sink more than fail_sink within its window (a slump), or by more than fail_strain.
         speed = numbers_after(done.get(5, ""), "speed")
-        strain = -numbers_after(done.get(5, ""), "displacement") / numbers_after(seated, "top of the column")
-        check(-speed > FAIL_SPEED or strain > FAIL_STRAIN,
-              f"{label}: the deck reports a failure, but the plate sinks at {-speed:.3g} (fail_speed "
-              f"{FAIL_SPEED}) by {strain:.3g} of the height (fail_strain {FAIL_STRAIN})")
+        sink = numbers_after(done.get(5, ""), "sink over the window")
+        strain = -numbers_after(done.get(5, ""), "), displacement") / numbers_after(seated, "top of the column")
+        check(sink > FAIL_SINK or strain > FAIL_STRAIN,
+              f"{label}: the deck reports a failure, but the plate sank {sink:.3g} over its window (fail_sink "
+              f"{FAIL_SINK}) and by {strain:.3g} of the height (fail_strain {FAIL_STRAIN})")
         print(f"{label}: largest interpenetration {deepest:.3g}, seated plate force {seated_force:.4g} "
               f"(weight {weight}); failed under load {load[-1, 2]:.4g}: plate sinking at {-speed:.3g}")
     elif len(load):

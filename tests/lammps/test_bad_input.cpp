@@ -267,6 +267,48 @@ TEST_F(BadInputTest, GrainsPlacedInsideEachOtherGetAWarning)
   EXPECT_TRUE(has(log, "grains ID 1 and 3")) << log;
 }
 
+// A heavily loaded stack: 20 cubes rounded by 0.00025 under a plate carrying 1000 (50 times
+// their weight). At tolerance 1e-4 the leftover impulse errors let them sink into each other
+// step after step: 2.0e-4 deep after 1000 steps (0.78 of the rounding radius), past the
+// default warning at 0.2 from step 126 on; at 1e-5 they stay ~1e-5 deep and nothing is said.
+// (The small pile of 27 grains under a plate of 3000 stayed ~1e-4 deep at either tolerance
+// after its landing: too few layers for the error to add up in a short test.)
+TEST_F(BadInputTest, InterpenetrationPastAFifthOfTheRoundingWarnsNamingTheTolerance)
+{
+  const std::string shapes = shape_file("tiny.shapes", "shape tiny_rounded\nradius 0.00025\nvertices 8\n"
+                                        "-0.5 -0.5 -0.5\n0.5 -0.5 -0.5\n-0.5 0.5 -0.5\n0.5 0.5 -0.5\n"
+                                        "-0.5 -0.5 0.5\n0.5 -0.5 0.5\n-0.5 0.5 0.5\n0.5 0.5 0.5\nend\n");
+  const double side = 1.0005;    // the core plus twice the rounding
+  for (const std::string tolerance : {"1e-4", "1e-5"}) {
+    SCOPED_TRACE("tolerance " + tolerance);
+    restart_instance();
+    commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+              "shapes read " + shapes, "region box block -5 5 -5 5 -1 30", "create_box 1 box"});
+    for (int k = 0; k < 20; k++) run("create_atoms 1 single 0 0 " + num((k + 0.5) * side));
+    commands({"shapes assign all shape 1 density 1", "pair_style nscd", "pair_coeff * * 0.5",
+              "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes", "timestep 0.001",
+              "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+              "fix solver all nscd tolerance " + tolerance + " max_sweeps 2000",
+              "fix plate all nscd/plate " + num(20 * side + 0.001) + " mass 10 load 1000 gravity 1 friction 0.5"});
+    const std::string log = log_of({"run 1000"});
+    if (tolerance == "1e-4") {
+      EXPECT_TRUE(has(log, "grains interpenetrate by")) << log;
+      EXPECT_TRUE(has(log, "smallest rounding radius 0.00025")) << log;
+      EXPECT_TRUE(has(log, "Tighten the tolerance (e.g. tolerance 1e-05)")) << log;
+      // once, then again only each time the depth has grown by half (measured: 0.20, 0.30, 0.45
+      // and 0.68 of the rounding at steps 126, 180, 280, 592): a handful, not one per step
+      size_t warnings = 0;
+      for (size_t at = log.find("interpenetrate by"); at != std::string::npos;
+           at = log.find("interpenetrate by", at + 1))
+        warnings++;
+      EXPECT_GE(warnings, 1u) << log;
+      EXPECT_LE(warnings, 5u) << log;
+    } else {
+      EXPECT_FALSE(has(log, "interpenetrate")) << log;
+    }
+  }
+}
+
 // Sharp cubes (rounding 0) overlapping by 0.1, less than a fifth of their bounding radius
 // (0.17) but deeper than their rounding: their cores intersect, the contact normals are not
 // reliable, so this warns too.

@@ -59,6 +59,16 @@ vertices 8
 -0.5 0.5 0.5
 0.5 0.5 0.5
 end
+shape ball
+radius 0.5
+vertices 1
+0 0 0
+end
+shape small_ball
+radius 0.25
+vertices 1
+0 0 0
+end
 )";
 }    // namespace
 
@@ -413,6 +423,49 @@ TEST_F(NSCDTest, PlateLoadedAtConstantRateIsCarriedByTheGrains)
     const std::vector<double> s = state_of(k);
     EXPECT_NEAR(s[2], 0.5, 1e-7);
     for (int d = 3; d < 9; d++) EXPECT_NEAR(s[d], 0.0, 1e-6);
+  }
+}
+
+// A slump between two looks: a small ball squeezed off a big one by the plate, on top of a
+// held tower of 6 cubes (frictionless). The plate drops 0.5 within a few dozen steps and
+// rests again on the big ball. The deck's old check (every 200 steps: plate sinking faster
+// than 0.2, or by more than 0.15 x the column's height) misses it; the sink over a sliding
+// window of 50 steps (fail_sink 0.1) finds it. On the tower alone it stays silent.
+TEST_F(NSCDTest, SlidingWindowCatchesASlumpTheChunkedCheckMisses)
+{
+  for (bool with_ball : {true, false}) {
+    SCOPED_TRACE(with_ball ? "slump" : "stable tower");
+    if (!with_ball) {
+      stop();
+      start();
+    }
+    scene(0.0);
+    for (int k = 0; k < 6; k++) add_cube(0.0, 0.0, 0.5 + k);
+    add_cube(0.0, 0.0, 6.5);                             // the big ball, held
+    const double dz = std::sqrt(0.75 * 0.75 - 0.2 * 0.2);
+    const double top = with_ball ? 6.5 + dz + 0.25 : 7.0;
+    if (with_ball) add_cube(0.2, 0.0, 6.5 + dz, 2);      // the small ball, off its top
+    commands({"group cubes id 1:6", "group big id 7", "group loose type 2",
+              "shapes assign cubes shape 1 density 1", "shapes assign big shape 4 density 1",
+              "timestep 0.005", "unfix solver", "fix solver loose nscd tolerance 1e-8 max_sweeps 2000",
+              "fix plate all nscd/plate " + num(top + 0.001) + " mass 1 load 20 gravity 1 fail_sink 0.1 fail_window 50"});
+    if (with_ball) run("shapes assign loose shape 5 density 1");
+    bool old_check_failed = false;
+    for (int chunk = 0; chunk < 3; chunk++) {    // 3 time units: the ball, off at 2.8, stays in the box
+      run("run 200");
+      old_check_failed = old_check_failed || fix_value("plate", 1) < -0.2 ||
+                         -fix_value("plate", 4) > 0.15 * top;
+    }
+    EXPECT_FALSE(old_check_failed);
+    if (with_ball) {
+      EXPECT_NEAR(fix_value("plate", 0), 7.0, 1e-3);    // now on the big ball
+      EXPECT_EQ(fix_value("plate", 8), 1.0);
+      EXPECT_NEAR(fix_value("plate", 9), 20.0, 1e-12);
+    } else {
+      EXPECT_NEAR(fix_value("plate", 4), -0.001, 1e-6);    // the gap it started above the tower
+      EXPECT_EQ(fix_value("plate", 8), 0.0);
+    }
+    EXPECT_GT(fix_value("plate", 6), 20.0);            // the peak force: at least the load
   }
 }
 
