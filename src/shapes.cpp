@@ -11,6 +11,7 @@
 #include "group.h"
 #include "utils.h"
 
+#include "shape/random_draws.h"
 #include "shape/random_grain.h"
 
 #include <algorithm>
@@ -23,33 +24,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-// Per-atom random numbers from (seed, atom ID, stream): the same on any number of ranks.
-double hashed_uniform(std::uint64_t seed, std::uint64_t tag, std::uint64_t stream)
-{
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ULL ^ (tag + 0x632BE59BD9B4E019ULL * (stream + 1));
-  for (int round = 0; round < 2; round++) {    // splitmix64 finaliser, twice
-    z += 0x9E3779B97F4A7C15ULL;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-  }
-  return (z >> 11) * 0x1.0p-53;    // [0, 1)
-}
-
-// Uniformly random rotation (Shoemake 1992) from three uniform numbers.
-void random_quaternion(double u1, double u2, double u3, double q[4])
-{
-  const double two_pi = 6.283185307179586;
-  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
-  q[0] = b * std::cos(two_pi * u3);
-  q[1] = a * std::sin(two_pi * u2);
-  q[2] = a * std::cos(two_pi * u2);
-  q[3] = b * std::sin(two_pi * u3);
-}
-
-}    // namespace
+using nscd::hashed_uniform;
+using nscd::random_quaternion;
 
 void Shapes::command(int narg, char **arg)
 {
@@ -201,6 +177,8 @@ void Shapes::info(int narg, char ** /*arg*/)
     text += fmt::format("  {} {} {} {:.6g} {:.6g} {:.6g} {}\n", id, s.vertices.size(),
                         s.faces.size(), s.radius, s.volume, s.bounding_radius, lib.name(id));
   }
+  text += fmt::format("  largest bounding radius {:.6g} (grain centres closer than twice this may overlap)\n",
+                      lib.max_bounding_radius());
   utils::logmesg(lmp, text);
 }
 
