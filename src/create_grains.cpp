@@ -7,6 +7,7 @@
 #include "nscd_args.h"
 #include "nscd_arrays.h"
 #include "nscd_gather.h"
+#include "nscd_new_atoms.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -290,37 +291,16 @@ void CreateGrains::create(const std::vector<Candidate> &accepted)
 
   const bigint natoms_before = atom->natoms;
   const int nlocal_before = atom->nlocal;
-  // New atoms take the slots of the last run's ghosts (as in create_atoms); the next run's
-  // setup rebuilds them.
-  atom->nghost = 0;
-  atom->avec->clear_bonus();
-  const double *sublo = domain->triclinic ? domain->sublo_lamda : domain->sublo;
-  const double *subhi = domain->triclinic ? domain->subhi_lamda : domain->subhi;
+  drop_ghosts_for_new_atoms(lmp);
   for (size_t k = 0; k < accepted.size(); k++) {
     const Placed &g = accepted[k].grain;
-    double x[3] = {g.x[0], g.x[1], g.x[2]}, lamda[3], *coord = x;
-    if (domain->triclinic) {
-      domain->x2lamda(x, lamda);
-      coord = lamda;
-    }
-    if (!(coord[0] >= sublo[0] && coord[0] < subhi[0] && coord[1] >= sublo[1] && coord[1] < subhi[1] &&
-          coord[2] >= sublo[2] && coord[2] < subhi[2]))
-      continue;
-    atom->avec->create_atom(r.type, x);
+    if (!in_my_subdomain(domain, g.x)) continue;
+    atom->avec->create_atom(r.type, const_cast<double *>(g.x));
     const int i = atom->nlocal - 1;
     atom->tag[i] = max_tag + 1 + (tagint) k;
     avec->set_shape(i, g.shape, r.density * avec->shapes().shape(g.shape).volume);
     for (int d = 0; d < 4; d++) avec->quat[i][d] = g.q[d];
   }
-  atom->data_fix_compute_variable(nlocal_before, atom->nlocal);
-  bigint nlocal = atom->nlocal;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->natoms != natoms_before + (bigint) accepted.size())
-    error->all(FLERR, "create_grains: {} of {} grains found no rank (on the box's upper faces?); keep the region "
-               "inside the box", natoms_before + (bigint) accepted.size() - atom->natoms, accepted.size());
-  atom->tag_check();
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_init();
-    atom->map_set();
-  }
+  finish_new_atoms(lmp, natoms_before, nlocal_before, (bigint) accepted.size(),
+                   "new grains found no rank (on the box's upper faces?); keep the region inside the box");
 }
