@@ -24,6 +24,7 @@
 #include "geometry/contact.h"
 #include "shape/shape_library.h"
 #include "nscd_gather.h"
+#include "nscd_new_atoms.h"
 #include "wire/wire_overlap.h"
 #include "wire/wire_path.h"
 
@@ -497,22 +498,11 @@ void CreateWire::create_nodes()
 
   const bigint natoms_before = atom->natoms;
   const int nlocal_before = atom->nlocal;
-  // New atoms take the slots after the owned ones, where the ghosts of the last run are:
-  // those are gone now (as in create_atoms), the next run's setup rebuilds them.
-  atom->nghost = 0;
-  atom->avec->clear_bonus();
-  const double *sublo = domain->triclinic ? domain->sublo_lamda : domain->sublo;
-  const double *subhi = domain->triclinic ? domain->subhi_lamda : domain->subhi;
+  drop_ghosts_for_new_atoms(lmp);
   for (size_t k = 0; k < r.in_box.size(); k++) {
-    double x[3], lamda[3], *coord = x;
+    double x[3];
     store(r.in_box[k], x);
-    if (domain->triclinic) {
-      domain->x2lamda(x, lamda);
-      coord = lamda;
-    }
-    if (!(coord[0] >= sublo[0] && coord[0] < subhi[0] && coord[1] >= sublo[1] && coord[1] < subhi[1] &&
-          coord[2] >= sublo[2] && coord[2] < subhi[2]))
-      continue;
+    if (!in_my_subdomain(domain, x)) continue;
     atom->avec->create_atom(r.node_type, x);
     const int i = atom->nlocal - 1;
     atom->tag[i] = r.first_tag + (tagint) k;
@@ -520,18 +510,9 @@ void CreateWire::create_nodes()
     atom->image[i] = r.images[k];
     avec->set_shape(i, 0, r.mass);
   }
-  atom->data_fix_compute_variable(nlocal_before, atom->nlocal);
-  bigint nlocal = atom->nlocal;
-  MPI_Allreduce(&nlocal, &atom->natoms, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (atom->natoms != natoms_before + (bigint) r.in_box.size())
-    error->all(FLERR, "create_wire {}: {} of {} nodes found no rank (on the box's upper faces?); "
-               "move the path inside the box", r.shape_name,
-               natoms_before + (bigint) r.in_box.size() - atom->natoms, r.in_box.size());
-  atom->tag_check();
-  if (atom->map_style != Atom::MAP_NONE) {
-    atom->map_init();
-    atom->map_set();
-  }
+  finish_new_atoms(lmp, natoms_before, nlocal_before, (bigint) r.in_box.size(),
+                   fmt::format("nodes of create_wire {} found no rank (on the box's upper faces?); move the path "
+                               "inside the box", r.shape_name));
 }
 
 /* A bond is stored on its first node, an angle on its middle node (and with newton_bond off

@@ -15,7 +15,7 @@
 #include "special.h"
 #include "update.h"
 
-#include "math/hashed_uniform.h"
+#include "shape/random_draws.h"
 #include "wire/elastic_forces.h"
 
 #include <algorithm>

@@ -11,7 +11,7 @@
 #include "group.h"
 #include "utils.h"
 
-#include "math/hashed_uniform.h"
+#include "shape/random_draws.h"
 #include "shape/random_grain.h"
 
 #include <algorithm>
@@ -24,23 +24,8 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
-// Per-atom random numbers from (seed, atom ID, stream): the same on any number of ranks.
 using nscd::hashed_uniform;
-
-// Uniformly random rotation (Shoemake 1992) from three uniform numbers.
-void random_quaternion(double u1, double u2, double u3, double q[4])
-{
-  const double two_pi = 6.283185307179586;
-  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
-  q[0] = b * std::cos(two_pi * u3);
-  q[1] = a * std::sin(two_pi * u2);
-  q[2] = a * std::cos(two_pi * u2);
-  q[3] = b * std::sin(two_pi * u3);
-}
-
-}    // namespace
+using nscd::random_quaternion;
 
 void Shapes::command(int narg, char **arg)
 {
@@ -192,6 +177,8 @@ void Shapes::info(int narg, char ** /*arg*/)
     text += fmt::format("  {} {} {} {:.6g} {:.6g} {:.6g} {}\n", id, s.vertices.size(),
                         s.faces.size(), s.radius, s.volume, s.bounding_radius, lib.name(id));
   }
+  text += fmt::format("  largest bounding radius {:.6g} (grain centres closer than twice this may overlap)\n",
+                      lib.max_bounding_radius());
   utils::logmesg(lmp, text);
 }
 

@@ -8,7 +8,7 @@
 #include "input.h"
 #include "variable.h"
 
-#include "math/hashed_uniform.h"
+#include "shape/random_draws.h"
 
 #include <algorithm>
 #include <cmath>
