@@ -57,7 +57,7 @@ struct CreateWire::Request {
   bool check_overlap = true;
   bool strained = false;            // elements may differ from the rest length
   double rest_length = 0.0;         // of the bond type
-  bool type_given = true, mol_given = false;
+  bool mol_given = false;
 
   // 'from ID|last': the wire continues from a free end, node 0 of the layout
   struct End {
