@@ -58,6 +58,29 @@ struct CreateWire::Request {
   bool check_overlap = true;
   bool strained = false;            // elements may differ from the rest length
   double rest_length = 0.0;         // of the bond type
+  bool mol_given = false;
+
+  // 'from ID|last': the wire continues from a free end, node 0 of the layout
+  struct End {
+    tagint tag = 0;                 // the end node (0: a new wire)
+    tagint neighbour = 0;           // its one neighbour along the wire
+    tagint second = 0;              // the neighbour's other neighbour (0: none)
+    nscd::Vec3 x, x_neighbour, x_second;    // unwrapped
+    int type = 0, bond_type = 0, angle_type = 0;
+    tagint molecule = 0;
+    double mass = 0.0;
+    int bonds_stored = 0, angles_stored = 0, neighbour_angles_stored = 0;
+    bool join_bond_on_end = true;   // newton_bond on: the join bond is stored on the end (else on the new node)
+  } end;
+  bool from_last = false;
+  bool continues() const { return from_last || end.tag > 0; }
+  // atom ID of layout node k (node 0 of a continued wire is its end)
+  tagint tag(int k) const
+  {
+    if (!continues()) return first_tag + (tagint) k;
+    return k == 0 ? end.tag : first_tag + (tagint) k - 1;
+  }
+  int first_new() const { return continues() ? 1 : 0; }
 
   nscd::wire::WireLayout layout;    // unwrapped node positions and topology
   std::vector<nscd::Vec3> in_box;   // the nodes remapped into a periodic box
@@ -80,7 +103,8 @@ CreateWire::~CreateWire() = default;
 
 /* create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 Z1 X2 Y2 Z2 | polyline FILE
                bond BTYPE mass M [angle ATYPE] [turns N] [pitch P] [gap DEG] [start DEG]
-               [axis AX AY AZ] [nodes N] [mol ID] [radius RW] [overlap TOL|ignore] [strained yes|no] */
+               [axis AX AY AZ] [nodes N] [mol ID] [radius RW] [overlap TOL|ignore] [strained yes|no]
+               [from ID|last] */
 void CreateWire::command(int narg, char **arg)
 {
   if (domain->box_exist == 0) error->all(FLERR, "create_wire: define the box first (create_box or read_data)");
@@ -89,7 +113,9 @@ void CreateWire::command(int narg, char **arg)
                "'atom_style hybrid spheropolyhedron angle'");
   AtomVecSpheropolyhedron::find(lmp, "create_wire");
   parse(narg, arg);
+  if (request->continues()) find_end();
   check_types();
+  if (request->continues()) check_room_at_end();
   lay_out();
   check_nodes_in_box();
   if (request->check_overlap) {
@@ -102,9 +128,11 @@ void CreateWire::command(int narg, char **arg)
   special.build();
 
   const Request &r = *request;
-  const size_t n = r.layout.nodes.size();
+  const size_t n = r.layout.nodes.size() - r.first_new();
   std::string end = r.layout.closed ? "closed ring" : "open";
-  if (r.shape == Request::Shape::loop && !r.layout.closed) {
+  if (r.continues()) {
+    end = fmt::format("continuing molecule {} from its end node ID {}", r.end.molecule, r.end.tag);
+  } else if (r.shape == Request::Shape::loop && !r.layout.closed) {
     // equal chords on a loop or helix are equal angles: the gap left open is a little wider
     nscd::Vec3 e1, e2;
     nscd::wire::loop_frame(r.loop.axis, e1, e2);
@@ -123,7 +151,7 @@ void CreateWire::command(int narg, char **arg)
     utils::logmesg(lmp, "create_wire: {} ({}): {} nodes (IDs {}..{}, molecule {}), {} elements of "
                    "length {:.10g}, {} joints\n", r.shape_name, end, n, r.first_tag,
                    r.first_tag + (tagint) n - 1, r.molecule, r.layout.topology.elements.size(),
-                   r.layout.chord, r.angle_type ? r.layout.topology.joints.size() : 0);
+                   r.layout.chord, r.angle_type ? r.layout.topology.joints.size() + (r.end.neighbour ? 1 : 0) : 0);
 }
 
 void CreateWire::parse(int narg, char **arg)
@@ -231,6 +259,12 @@ void CreateWire::parse(int narg, char **arg)
     } else if (key == "mol") {
       need(1);
       r.molecule = (tagint) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
+      r.mol_given = true;
+      iarg += 2;
+    } else if (key == "from") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "last") == 0) r.from_last = true;
+      else r.end.tag = (tagint) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
       iarg += 2;
     } else if (key == "radius") {
       need(1);
@@ -254,11 +288,154 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 2;
     } else {
       error->all(FLERR, "create_wire: unknown keyword '{}' (expected bond, angle, mass, turns, pitch, "
-                 "gap, start, axis, nodes, mol, radius, overlap, strained)", key);
+                 "gap, start, axis, nodes, mol, radius, overlap, strained, from)", key);
     }
+  }
+  if (r.continues()) {
+    if (r.nodes > 0)
+      error->all(FLERR, "create_wire: 'nodes' cannot be combined with 'from' (the elements of a continued wire "
+                 "have the rest length of its bond type); drop 'nodes'");
+    return;    // the types, molecule and mass default to the wire's (find_end)
   }
   if (r.bond_type == 0) error->all(FLERR, "create_wire: give the bond type of the elements ('bond BTYPE')");
   if (r.mass < 0.0) error->all(FLERR, "create_wire: give the node mass ('mass M')");
+}
+
+/* 'from ID|last': the wire nodes, their bonds and angles from every rank (a setup command),
+   the end checked to be a free end (a wire node with exactly one element), and the wire's
+   node type, bond and angle types, molecule ID and node mass there, which the new part takes
+   (given values must agree). */
+void CreateWire::find_end()
+{
+  Request &r = *request;
+  Request::End &end = r.end;
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  struct NodeRecord {
+    tagint tag, molecule;
+    int type, grain, bonds, angles;
+    double x[3], mass;
+  };
+  struct BondRecord {
+    tagint a, b;
+    int type;
+  };
+  struct AngleRecord {
+    tagint a, b, c;
+    int type;
+  };
+  std::vector<NodeRecord> my_nodes;
+  std::vector<BondRecord> my_bonds;
+  std::vector<AngleRecord> my_angles;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const bool grain = avec->shape[i] != 0;
+    if (grain && atom->tag[i] != end.tag) continue;
+    NodeRecord n{atom->tag[i], atom->molecule[i], atom->type[i], grain ? 1 : 0, atom->num_bond[i],
+                 atom->num_angle ? atom->num_angle[i] : 0, {0.0, 0.0, 0.0}, avec->rmass[i]};
+    domain->unmap(atom->x[i], atom->image[i], n.x);
+    my_nodes.push_back(n);
+    if (grain) continue;
+    for (int m = 0; m < atom->num_bond[i]; m++)
+      my_bonds.push_back({atom->tag[i], atom->bond_atom[i][m], atom->bond_type[i][m]});
+    for (int m = 0; atom->num_angle && m < atom->num_angle[i]; m++)
+      my_angles.push_back({atom->angle_atom1[i][m], atom->angle_atom2[i][m], atom->angle_atom3[i][m],
+                           atom->angle_type[i][m]});
+  }
+  std::map<tagint, NodeRecord> nodes;
+  for (const NodeRecord &n : gather_records(my_nodes, world, true)) nodes[n.tag] = n;
+  std::map<tagint, std::map<tagint, int>> partners;    // node -> neighbour -> bond type
+  for (const BondRecord &b : gather_records(my_bonds, world, true)) {
+    if (!nodes.count(b.a) || !nodes.count(b.b) || nodes[b.b].grain) continue;
+    partners[b.a][b.b] = b.type;
+    partners[b.b][b.a] = b.type;
+  }
+  const std::vector<AngleRecord> angles = gather_records(my_angles, world, true);
+  auto free_ends_of = [&](tagint molecule) {
+    std::vector<tagint> ends;
+    for (const auto &[tag, n] : nodes)
+      if (!n.grain && n.molecule == molecule && partners[tag].size() == 1) ends.push_back(tag);
+    return ends;
+  };
+
+  const std::string what = r.from_last ? "from last" : fmt::format("from {}", end.tag);
+  if (r.from_last) {
+    for (const auto &[tag, n] : nodes)
+      if (!n.grain && partners[tag].size() == 1) end.tag = tag;    // the largest ID
+    if (end.tag == 0)
+      error->all(FLERR, "create_wire from last: no wire has a free end (a node with one element) to continue");
+  }
+  const auto found = nodes.find(end.tag);
+  if (found == nodes.end())
+    error->all(FLERR, "create_wire {}: no atom has ID {}; give the ID of a wire's free end", what, end.tag);
+  const NodeRecord &e = found->second;
+  if (e.grain)
+    error->all(FLERR, "create_wire {}: atom ID {} is a grain, not a wire node; give the ID of a wire's free end",
+               what, end.tag);
+  const size_t elements = partners[end.tag].size();
+  if (elements != 1) {
+    const std::vector<tagint> ends = free_ends_of(e.molecule);
+    std::string listed;
+    for (tagint t : ends) listed += fmt::format("{}{}", listed.empty() ? "" : " ", t);
+    std::string hint = ends.empty() ? fmt::format("its wire (molecule {}) has no free end: a closed ring", e.molecule)
+                                    : fmt::format("the free ends of molecule {}: ID(s) {}", e.molecule, listed);
+    error->all(FLERR, "create_wire {}: node ID {} is not a free end of a wire: it joins {} elements ({}); "
+               "continue from a node with exactly one element; {}", what, end.tag, elements,
+               elements == 0 ? "a lone node" : "an inner node, or a node of a ring", hint);
+  }
+  end.neighbour = partners[end.tag].begin()->first;
+  end.bond_type = partners[end.tag].begin()->second;
+  for (const auto &[tag, type] : partners[end.neighbour])
+    if (tag != end.tag) end.second = tag;
+  end.x = vec3(e.x);
+  end.x_neighbour = vec3(nodes[end.neighbour].x);
+  if (end.second) end.x_second = vec3(nodes[end.second].x);
+  end.type = e.type;
+  end.molecule = e.molecule;
+  end.mass = e.mass;
+  end.bonds_stored = e.bonds;
+  end.angles_stored = e.angles;
+  end.neighbour_angles_stored = nodes[end.neighbour].angles;
+  // the wire's bending type: the joint at the neighbour, else any joint of the molecule
+  for (const AngleRecord &a : angles)
+    if (a.b == end.neighbour || (!end.angle_type && nodes.count(a.b) && nodes[a.b].molecule == end.molecule))
+      end.angle_type = a.type;
+
+  auto agree = [&](const char *name, long long given, long long wire, const char *keyword) {
+    if (given != wire)
+      error->all(FLERR, "create_wire {}: {} {} differs from the wire's {} at node ID {}; a continued wire keeps "
+                 "its types and molecule: give {} or drop '{}'", what, name, given, wire, end.tag, wire, keyword);
+  };
+  agree("atom type", r.node_type, end.type, "TYPE");
+  if (r.bond_type) agree("bond type", r.bond_type, end.bond_type, "bond");
+  r.bond_type = end.bond_type;
+  if (r.angle_type && end.angle_type) agree("angle type", r.angle_type, end.angle_type, "angle");
+  if (end.angle_type) r.angle_type = end.angle_type;
+  if (r.mol_given) agree("molecule", r.molecule, end.molecule, "mol");
+  r.molecule = end.molecule;
+  if (r.mass < 0.0) r.mass = end.mass;
+}
+
+/* The end node stores the join bond (newton_bond on: if it has room, else the first new node
+   does) and the joint at the end; with newton_bond off every atom of a bond or angle stores
+   it. Room is checked before anything is created. */
+void CreateWire::check_room_at_end()
+{
+  Request &r = *request;
+  Request::End &end = r.end;
+  const int bonds = atom->bond_per_atom, angles = atom->angle_per_atom;
+  auto short_of = [&](const char *what, tagint tag, int stored, int per_atom, const char *keyword) {
+    error->all(FLERR, "create_wire from {}: node ID {} stores {} {}(s) and has room for {}; the join needs one "
+               "more: create the box with '{} {}'", end.tag, tag, stored, what, per_atom, keyword, stored + 1);
+  };
+  if (force->newton_bond) {
+    end.join_bond_on_end = end.bonds_stored < bonds;
+    if (!end.join_bond_on_end && bonds < 2) short_of("bond", end.tag, end.bonds_stored, bonds, "extra/bond/per/atom");
+  } else if (end.bonds_stored >= bonds) {
+    short_of("bond", end.tag, end.bonds_stored, bonds, "extra/bond/per/atom");
+  }
+  if (!r.angle_type) return;
+  if (end.angles_stored >= angles) short_of("angle", end.tag, end.angles_stored, angles, "extra/angle/per/atom");
+  if (!force->newton_bond && end.neighbour_angles_stored >= angles)
+    short_of("angle", end.neighbour, end.neighbour_angles_stored, angles, "extra/angle/per/atom");
 }
 
 /* The types must exist with bond_style wire coefficients: the bond type's rest length is the
@@ -310,7 +487,9 @@ void CreateWire::lay_out()
   Request &r = *request;
   try {
     const bool loop = r.shape == Request::Shape::loop;
-    if (r.nodes > 0) r.layout = loop ? lay_loop_nodes(r.loop, r.nodes) : lay_polyline_nodes(r.polyline, r.nodes);
+    if (r.continues())
+      r.layout = loop ? lay_loop_from(r.end.x, r.loop, r.rest_length) : lay_polyline_from(r.end.x, r.polyline, r.rest_length);
+    else if (r.nodes > 0) r.layout = loop ? lay_loop_nodes(r.loop, r.nodes) : lay_polyline_nodes(r.polyline, r.nodes);
     else r.layout = loop ? lay_loop(r.loop, r.rest_length) : lay_polyline(r.polyline, r.rest_length);
   } catch (std::exception &e) {
     error->all(FLERR, "create_wire {}: {}", r.shape_name, e.what());
@@ -406,7 +585,7 @@ void CreateWire::check_overlaps()
   for (Fix *fix : modify->get_fix_list()) {
     auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
     if (!boundary_fix) continue;
-    for (size_t k = 0; k < r.in_box.size(); k++) {
+    for (size_t k = r.first_new(); k < r.in_box.size(); k++) {
       const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
       if (-p.gap > allowed)
         error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} "
@@ -428,9 +607,28 @@ void CreateWire::check_wire_overlaps()
   const double allowed = r.overlap * r.radius;
   const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, r.layout.nodes);
   const wire::WirePieces mine{r.layout.nodes, r.layout.topology.elements};
-  const wire::ElementOverlap self = wire::deepest_overlap_within(mine, r.radius, shifts);
+  // a continued wire: its last two elements join the new part's own check, where the pairs
+  // joined through the end are exempt as the contact model exempts them
+  wire::WirePieces joined = mine;
+  std::vector<std::array<tagint, 2>> end_elements;
+  const int n = (int) r.layout.nodes.size();
+  if (r.continues()) {
+    joined.nodes.push_back(r.end.x_neighbour);
+    joined.elements.push_back({n, 0, r.rest_length});
+    end_elements.push_back({r.end.neighbour, r.end.tag});
+    if (r.end.second) {
+      joined.nodes.push_back(r.end.x_second);
+      joined.elements.push_back({n + 1, n, r.rest_length});
+      end_elements.push_back({r.end.second, r.end.neighbour});
+    }
+  }
+  auto node_name = [&](int k) {
+    if (k < n && k >= r.first_new()) return fmt::format("{}", k + 1 - r.first_new());
+    return fmt::format("ID {}", k == 0 ? r.end.tag : k == n ? r.end.neighbour : r.end.second);
+  };
+  const wire::ElementOverlap self = wire::deepest_overlap_within(joined, r.radius, shifts);
   if (self.depth > allowed) {
-    const auto &ea = r.layout.topology.elements[self.a], &eb = r.layout.topology.elements[self.b];
+    const auto &ea = joined.elements[self.a], &eb = joined.elements[self.b];
     std::string why = "lay it elsewhere, raise 'overlap', or use 'overlap ignore'";
     if (self.shift.squaredNorm() > 0.0)
       why = fmt::format("the wire reaches its own periodic image, ({:.6g}, {:.6g}, {:.6g}) away: make it smaller "
@@ -439,8 +637,8 @@ void CreateWire::check_wire_overlaps()
       why = fmt::format("the pitch {:.6g} is below the wire's diameter {:.6g}, so its turns lie on each other: give "
                         "a pitch of at least {:.6g}", r.loop.pitch, 2.0 * r.radius, 2.0 * r.radius);
     error->all(FLERR, "create_wire {}: the new wire overlaps itself by {:.4g} (allowed: {:.4g}, {} x the wire "
-               "radius) between its elements {}-{} and {}-{} (node numbers along the path); {}", r.shape_name,
-               self.depth, allowed, r.overlap, ea.a + 1, ea.b + 1, eb.a + 1, eb.b + 1, why);
+               "radius) between its elements {}-{} and {}-{} (new nodes numbered along the path); {}", r.shape_name,
+               self.depth, allowed, r.overlap, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
   }
 
   // The wires already there: their nodes and bonds from every rank, each element with its
@@ -464,6 +662,10 @@ void CreateWire::check_wire_overlaps()
   for (const auto &b : gather_records(my_bonds, world, true)) {
     const auto p = where.find(b[0]), q = where.find(b[1]);
     if (p == where.end() || q == where.end()) continue;    // a bond to a grain: not a wire element
+    auto same = [&](const std::array<tagint, 2> &e) {
+      return (e[0] == b[0] && e[1] == b[1]) || (e[0] == b[1] && e[1] == b[0]);
+    };
+    if (std::any_of(end_elements.begin(), end_elements.end(), same)) continue;    // checked above
     double delta[3] = {q->second.x() - p->second.x(), q->second.y() - p->second.y(), q->second.z() - p->second.z()};
     domain->minimum_image(delta);
     const int first = (int) existing.nodes.size();
@@ -499,63 +701,74 @@ void CreateWire::create_nodes()
   const bigint natoms_before = atom->natoms;
   const int nlocal_before = atom->nlocal;
   drop_ghosts_for_new_atoms(lmp);
-  for (size_t k = 0; k < r.in_box.size(); k++) {
+  for (size_t k = r.first_new(); k < r.in_box.size(); k++) {
     double x[3];
     store(r.in_box[k], x);
     if (!in_my_subdomain(domain, x)) continue;
     atom->avec->create_atom(r.node_type, x);
     const int i = atom->nlocal - 1;
-    atom->tag[i] = r.first_tag + (tagint) k;
+    atom->tag[i] = r.tag((int) k);
     atom->molecule[i] = r.molecule;
     atom->image[i] = r.images[k];
     avec->set_shape(i, 0, r.mass);
   }
-  finish_new_atoms(lmp, natoms_before, nlocal_before, (bigint) r.in_box.size(),
+  finish_new_atoms(lmp, natoms_before, nlocal_before, (bigint) r.in_box.size() - r.first_new(),
                    fmt::format("nodes of create_wire {} found no rank (on the box's upper faces?); move the path "
                                "inside the box", r.shape_name));
 }
 
 /* A bond is stored on its first node, an angle on its middle node (and with newton_bond off
-   also on the others), as create_bonds does. */
+   also on the others), as create_bonds does. A continued wire's join bond is stored on its end
+   if that has room, else on the first new node (check_room_at_end); the joint at the end
+   (neighbour, end, first new node) is one more angle. */
 void CreateWire::create_bonds_and_angles()
 {
   const Request &r = *request;
-  auto local = [&](int node) {
-    const int i = atom->map(r.first_tag + node);
+  auto local_tag = [&](tagint tag) {
+    const int i = atom->map(tag);
     return i >= 0 && i < atom->nlocal ? i : -1;
   };
+  auto local = [&](int node) { return local_tag(r.tag(node)); };
   auto add_bond = [&](int i, int other) {
     if (i < 0) return;
     if (atom->num_bond[i] == atom->bond_per_atom)
       error->one(FLERR, "create_wire: node ID {} has no room for another bond; create the box with "
                  "more 'extra/bond/per/atom'", atom->tag[i]);
     atom->bond_type[i][atom->num_bond[i]] = r.bond_type;
-    atom->bond_atom[i][atom->num_bond[i]++] = r.first_tag + other;
+    atom->bond_atom[i][atom->num_bond[i]++] = r.tag(other);
   };
   for (const auto &e : r.layout.topology.elements) {
+    const bool join = r.continues() && e.a == 0;
+    if (join && force->newton_bond && !r.end.join_bond_on_end) {
+      add_bond(local(e.b), e.a);
+      continue;
+    }
     add_bond(local(e.a), e.b);
     if (!force->newton_bond) add_bond(local(e.b), e.a);
   }
   atom->nbonds += (bigint) r.layout.topology.elements.size();
   if (!r.angle_type) return;
 
-  auto add_angle = [&](int i, const nscd::wire::WireJoint &j) {
+  auto add_angle = [&](int i, const std::array<tagint, 3> &j) {
     if (i < 0) return;
     if (atom->num_angle[i] == atom->angle_per_atom)
       error->one(FLERR, "create_wire: node ID {} has no room for another angle; create the box with "
                  "more 'extra/angle/per/atom'", atom->tag[i]);
     const int m = atom->num_angle[i]++;
     atom->angle_type[i][m] = r.angle_type;
-    atom->angle_atom1[i][m] = r.first_tag + j.a;
-    atom->angle_atom2[i][m] = r.first_tag + j.b;
-    atom->angle_atom3[i][m] = r.first_tag + j.c;
+    atom->angle_atom1[i][m] = j[0];
+    atom->angle_atom2[i][m] = j[1];
+    atom->angle_atom3[i][m] = j[2];
   };
-  for (const auto &j : r.layout.topology.joints) {
-    add_angle(local(j.b), j);
+  std::vector<std::array<tagint, 3>> joints;
+  if (r.continues()) joints.push_back({r.end.neighbour, r.end.tag, r.tag(1)});
+  for (const auto &j : r.layout.topology.joints) joints.push_back({r.tag(j.a), r.tag(j.b), r.tag(j.c)});
+  for (const auto &j : joints) {
+    add_angle(local_tag(j[1]), j);
     if (!force->newton_bond) {
-      add_angle(local(j.a), j);
-      add_angle(local(j.c), j);
+      add_angle(local_tag(j[0]), j);
+      add_angle(local_tag(j[2]), j);
     }
   }
-  atom->nangles += (bigint) r.layout.topology.joints.size();
+  atom->nangles += (bigint) joints.size();
 }

@@ -1,5 +1,6 @@
 /* create_wire: lays a wire (nodes, bond_style wire elements, angle_style wire joints) along
-   a loop, helix, line or polyline, on any number of ranks. The path geometry is
+   a loop, helix, line or polyline, on any number of ranks, as a new wire or continuing one
+   from its free end ('from ID|last'). The path geometry is
    lib/wire/wire_path.h. See doc/create_wire.md. */
 
 #ifdef COMMAND_CLASS
@@ -29,6 +30,8 @@ class CreateWire : public Command {
   std::unique_ptr<Request> request;
 
   void parse(int narg, char **arg);
+  void find_end();       // the free end that 'from' continues, and the wire's types there
+  void check_room_at_end();
   void check_types();
   void lay_out();
   void check_nodes_in_box();

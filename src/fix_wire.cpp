@@ -406,6 +406,7 @@ void FixWire::setup(int /*vflag*/)
   indexed_at = -1;
   gather_elements();
   warn_about_elements_inside_grains();
+  warn_about_strained_elements();
   rescale_states(lib->plan.dt_sp);
   if (lib->contacts) lib->contacts->forget_shapes();
   diagnostics[SUBSTEPS] = lib->plan.substeps;
@@ -469,6 +470,51 @@ void FixWire::warn_about_elements_inside_grains()
                    "unless 'overlap ignore') or move the grain", id, (tagint) found[0], (tagint) found[1],
                    (tagint) found[2], worst.depth, worst.depth / wire_radius, lib->law.k_n,
                    worst.depth * std::sqrt(lib->law.k_n / found[3]));
+}
+
+/* Elements far from their rest length at the start of a run (two wires joined by
+   create_bonds with one long element of a shared bond type, 'create_wire ... strained yes'
+   with a wrong rest length, a hand-made data file): such an element pulls its nodes with
+   k_elo x strain from the first substep and can fling them, and the grains they touch. Warned
+   about when the length is more than kStrainWarning (10 %) off the rest length: far beyond
+   what the examples' loads stretch (k_elo 5000: a strain of 1e-3 is a tension of 5) and what
+   'strained yes' is meant for (a ring's chord a few % off). newton_bond on (fix wire's
+   restriction): each element is in exactly one rank's bond list. */
+void FixWire::warn_about_strained_elements()
+{
+  constexpr double kStrainWarning = 0.1;
+  if (!bond) return;
+  double worst[2] = {0.0, (double) comm->me};    // |strain|, rank
+  std::array<double, 5> found = {0.0, 0.0, 0.0, 0.0, 0.0};    // node IDs, length, rest length, k_elo
+  bigint count = 0;
+  for (int n = 0; n < neighbor->nbondlist; n++) {
+    const int i = neighbor->bondlist[n][0], j = neighbor->bondlist[n][1], type = neighbor->bondlist[n][2];
+    if (!(atom->mask[i] & groupbit) && !(atom->mask[j] & groupbit)) continue;
+    const double length = (vec3(atom->x[i]) - vec3(atom->x[j])).norm(), rest = bond->rest_length(type);
+    const double strain = length / rest - 1.0;
+    const wire::AxialLaw law = bond->law(type);
+    if (strain < 0.0 && !law.resists_compression) continue;    // a slack string pulls nothing
+    if (!(std::abs(strain) > kStrainWarning)) continue;
+    count++;
+    if (std::abs(strain) > worst[0]) {
+      worst[0] = std::abs(strain);
+      found = {(double) atom->tag[i], (double) atom->tag[j], length, rest, law.k_elo};
+    }
+  }
+  bigint total = 0;
+  MPI_Allreduce(&count, &total, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (total == 0) return;
+  double deepest[2];
+  MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
+  MPI_Bcast(found.data(), 5, MPI_DOUBLE, (int) deepest[1], world);
+  const double ratio = found[2] / found[3];
+  if (comm->me == 0)
+    error->warning(FLERR, "fix wire {}: {} wire element(s) start more than {:.0f} % away from their rest length; the "
+                   "worst, nodes ID {} and {}, is {:.4g} long for a rest length of {:.4g} ({:.3g} x), a force of "
+                   "k_elo x strain = {:.4g} on its nodes from the first step that can fling them and the grains they "
+                   "touch. Join wires with 'create_wire ... from ID' (elements at the rest length), or give such an "
+                   "element a bond type of its own rest length", id, total, 100.0 * kStrainWarning,
+                   (tagint) found[0], (tagint) found[1], found[2], found[3], ratio, found[4] * std::abs(ratio - 1.0));
 }
 
 void FixWire::reset_dt()

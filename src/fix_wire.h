@@ -146,6 +146,7 @@ class FixWire : public Fix {
   void find_boundaries();
   void check_contacts_possible();
   void warn_about_elements_inside_grains();
+  void warn_about_strained_elements();
   void plan_substeps();
   void refuse_absurd_substeps(int needed);
   std::string requested_substeps_text() const;

@@ -163,6 +163,33 @@ Curve polyline_curve(const PolylinePath &path)
   };
 }
 
+// The path preceded by the straight segment from `from` to its start, by arc length where
+// the path is (loops and polylines are), with the joined length in `length`.
+Curve continued(const Vec3 &from, const Curve &path, double path_length, double chord, double &length)
+{
+  if (!from.allFinite()) throw WirePathError("the wire's end to continue from is not finite");
+  const Vec3 start = path(0.0);
+  const double bridge = (start - from).norm();
+  length = path_length;
+  if (bridge <= 1e-9 * chord) return [from, path](double t) { return t <= 0.0 ? from : path(t); };
+  length = bridge + path_length;
+  const double split = bridge / length;
+  return [from, start, path, split](double t) {
+    if (t < split) return Vec3(from + (t / split) * (start - from));
+    return path((t - split) / (1.0 - split));
+  };
+}
+
+WireLayout lay_continued(const Vec3 &from, const Curve &path, double path_length, double chord)
+{
+  double length = 0.0;
+  const Curve at = continued(from, path, path_length, chord, length);
+  if (chord > length)
+    throw WirePathError("element length " + text(chord) + " is longer than the path from the wire's end (" +
+                        text(length) + ")");
+  return layout_from(at, walk(at, length, chord), chord, false);
+}
+
 void check_chord(double chord)
 {
   if (!(chord > 0.0) || !std::isfinite(chord))
@@ -310,6 +337,26 @@ WireLayout lay_polyline_nodes(const PolylinePath &path, int nodes)
 {
   const double length = polyline_length(path);
   return open_nodes(polyline_curve(path), length, nodes);
+}
+
+WireLayout lay_loop_from(const Vec3 &from, const LoopPath &path, double chord)
+{
+  check_loop(path);
+  check_chord(chord);
+  if (is_closed(path))
+    throw WirePathError("a closed ring (one flat turn without a gap) cannot continue a wire: leave a gap or give a "
+                        "pitch");
+  if (!(chord < 2.0 * path.radius))
+    throw WirePathError("element length " + text(chord) + " does not fit a loop of radius " +
+                        text(path.radius) + " (it must be below the diameter)");
+  return lay_continued(from, loop_curve(path), loop_length(path), chord);
+}
+
+WireLayout lay_polyline_from(const Vec3 &from, const PolylinePath &path, double chord)
+{
+  const double length = polyline_length(path);
+  check_chord(chord);
+  return lay_continued(from, polyline_curve(path), length, chord);
 }
 
 }    // namespace nscd::wire

@@ -75,6 +75,14 @@ WireLayout lay_polyline(const PolylinePath &path, double chord);
 WireLayout lay_loop_nodes(const LoopPath &path, int nodes);
 WireLayout lay_polyline_nodes(const PolylinePath &path, int nodes);
 
+// The same paths continuing a wire from its free end `from` (create_wire ... from ID): the
+// path walked at equal chords is the straight segment from `from` to the path's start (none
+// if they coincide within 1e-9 of a chord), then the path; node 0 is `from` itself, so the
+// first element is the join, at the rest length like every other. A closed loop cannot
+// continue a wire (it has no free end to continue with): WirePathError.
+WireLayout lay_loop_from(const Vec3 &from, const LoopPath &path, double chord);
+WireLayout lay_polyline_from(const Vec3 &from, const PolylinePath &path, double chord);
+
 // The point of the loop at sweep fraction t in [0, 1].
 Vec3 loop_point(const LoopPath &path, double t);
 

@@ -34,6 +34,21 @@ case "$name" in
     done
     /usr/bin/python3 "$here/check_column.py" log.column log.bare log.ring
     ;;
+  string)  # 3 layers of the single string through all five phases, briefly (< 1 min): one
+           # molecule, one chain (elements = nodes - 1), every element laid at its rest length
+    small=(-var layers 3 -var R 2 -var element 0.3 -var layer_steps 200 -var wire_steps 100
+           -var relax_chunk 100 -var relax_max 2 -var wall_speed 0.3 -var wall_travel 0.3
+           -var seat_steps 100 -var seat_max 1 -var load_chunk 100 -var load_max 1 -var load_rate 20
+           -var thermo_every 100 -var dump_every 100000 -var column_deck "$src/../column/in.column")
+    "${launch[@]}" "$lmp" -in "$deck" -log log.string "${small[@]}" > screen.txt
+    grep -q "^phase 5 done" log.string || { echo "string: phase 5 not reached"; exit 1; }
+    ! grep -q "ERROR\|Lost atoms\|away from their rest length" log.string
+    [ "$(grep -c '^create_wire: .*continuing molecule 1 from its end node' log.string)" -eq 4 ] ||
+      { echo "string: expected 2 risers and 2 loops continued"; exit 1; }
+    awk '/^create_wire: / { for (k = 1; k <= NF; k++) { if ($k == "nodes") n += $(k-1); if ($k == "elements") e += $(k-1) }
+                            if ($0 !~ /molecule 1\)/) bad = 1 }
+         END { if (bad || e != n - 1) { printf "string: %d nodes, %d elements, molecules %s\n", n, e, bad ? "several" : "1"; exit 1 } }' log.string
+    ;;
   *)       # validation decks: they print "check NAME: passed" or exit with status 1
     cp "$src"/*.shapes . 2>/dev/null || true
     "${launch[@]}" "$lmp" -in "$deck" -log log.lammps > screen.txt

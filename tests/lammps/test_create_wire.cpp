@@ -8,8 +8,15 @@
 #include "fix.h"
 #include "modify.h"
 
+#include "angle.h"
+#include "bond.h"
+#include "force.h"
+
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <map>
 #include <string>
 #include <vector>
@@ -66,6 +73,61 @@ class CreateWireTest : public LammpsTest {
   static double distance(const Node &a, const Node &b)
   {
     return std::sqrt(std::pow(a.x[0] - b.x[0], 2) + std::pow(a.x[1] - b.x[1], 2) + std::pow(a.x[2] - b.x[2], 2));
+  }
+
+  static double summed(double mine)
+  {
+    double all;
+    MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  }
+
+  // Every bond (as an ordered pair of IDs, with its type) and angle (with its type) from all
+  // ranks, each once.
+  std::set<std::array<tagint, 3>> bonds()
+  {
+    std::vector<tagint> mine;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      for (int m = 0; m < lmp->atom->num_bond[i]; m++) {
+        const tagint a = lmp->atom->tag[i], b = lmp->atom->bond_atom[i][m];
+        mine.insert(mine.end(), {std::min(a, b), std::max(a, b), (tagint) lmp->atom->bond_type[i][m]});
+      }
+    std::set<std::array<tagint, 3>> all;
+    const std::vector<tagint> everything = gathered(mine);
+    for (size_t k = 0; k < everything.size(); k += 3) all.insert({everything[k], everything[k + 1], everything[k + 2]});
+    return all;
+  }
+  std::set<std::array<tagint, 4>> angles()
+  {
+    std::vector<tagint> mine;
+    for (int i = 0; i < lmp->atom->nlocal; i++)
+      for (int m = 0; m < lmp->atom->num_angle[i]; m++)
+        mine.insert(mine.end(), {lmp->atom->angle_atom1[i][m], lmp->atom->angle_atom2[i][m],
+                                 lmp->atom->angle_atom3[i][m], (tagint) lmp->atom->angle_type[i][m]});
+    std::set<std::array<tagint, 4>> all;
+    const std::vector<tagint> everything = gathered(mine);
+    for (size_t k = 0; k < everything.size(); k += 4)
+      all.insert({everything[k], everything[k + 1], everything[k + 2], everything[k + 3]});
+    return all;
+  }
+  std::vector<tagint> gathered(const std::vector<tagint> &mine)
+  {
+    const int count = (int) mine.size();
+    std::vector<int> counts(ranks()), offsets(ranks(), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    for (int r = 1; r < ranks(); r++) offsets[r] = offsets[r - 1] + counts[r - 1];
+    std::vector<tagint> all(offsets.back() + counts.back());
+    MPI_Allgatherv(mine.data(), count, MPI_LMP_TAGINT, all.data(), counts.data(), offsets.data(), MPI_LMP_TAGINT,
+                   MPI_COMM_WORLD);
+    return all;
+  }
+  // The rank that owns atom `tag`.
+  int owner(tagint tag)
+  {
+    const int i = lmp->atom->map(tag);
+    int mine = i >= 0 && i < lmp->atom->nlocal ? rank() : -1, found;
+    MPI_Allreduce(&mine, &found, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    return found;
   }
 
   std::string log_of(const std::string &line)
@@ -216,4 +278,167 @@ TEST_F(CreateWireTest, WiresLaidBetweenRunsAreIntegratedByFixWire)
     EXPECT_NEAR(node.x[2], 0.02, 0.005) << "node " << tag;
   }
   EXPECT_EQ(lmp->atom->natoms, 62);
+}
+
+// ---------------------------------------------------------------- continuing a wire ('from')
+
+// A straight line continued straight from its end, across the cuts of 2 and 4 ranks (the
+// join element crosses x = 0, y = 0 and z = 2 at once): one chain of 21 nodes, 20 bonds and
+// 19 angles, the join at the rest length, and a straight wire at rest: no force on any node,
+// no stretching or bending energy (closed form: zero).
+TEST_F(CreateWireTest, StraightLineContinuedStraightIsOneWireAtRest)
+{
+  box();
+  const double u = 0.2 / std::sqrt(3.0);    // a chord along (1, 1, 1)
+  auto point = [&](double k) {              // k chords from the end node
+    return num(-0.1 + k * u) + " " + num(-0.1 + k * u) + " " + num(1.9 + k * u);
+  };
+  run("create_wire 1 line " + point(-10) + " " + point(0) + " bond 1 angle 1 mass 0.01 radius 0.02");
+  ASSERT_EQ(lmp->atom->natoms, 11);
+  const std::string log = log_of("create_wire 1 line " + point(0) + " " + point(10) + " from last radius 0.02");
+  EXPECT_NE(log.find("continuing molecule 1 from its end node ID 11"), std::string::npos) << log;
+  ASSERT_EQ(lmp->atom->natoms, 21);
+  EXPECT_EQ(lmp->atom->nbonds, 20);
+  EXPECT_EQ(lmp->atom->nangles, 19);
+  const auto all = nodes();
+  for (auto &[tag, node] : all) {
+    EXPECT_EQ(node.molecule, 1) << tag;
+    EXPECT_EQ(node.type, 1) << tag;
+    EXPECT_DOUBLE_EQ(node.mass, 0.01) << tag;    // the end's mass
+    if (tag > 1) EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-12) << tag;
+  }
+  const auto b = bonds();
+  EXPECT_EQ(b.size(), 20u);
+  EXPECT_TRUE(b.count({11, 12, 1})) << "the join bond";
+  const auto a = angles();
+  EXPECT_EQ(a.size(), 19u);
+  EXPECT_TRUE(a.count({10, 11, 12, 1})) << "the joint at the end";
+  EXPECT_TRUE(a.count({11, 12, 13, 1})) << "the joint at the first new node";
+  if (ranks() > 1) EXPECT_NE(owner(11), owner(12)) << "the join should cross a rank cut";
+  // special lists rebuilt: the end has two 1-2 neighbours now
+  const int i = lmp->atom->map(11);
+  if (i >= 0 && i < lmp->atom->nlocal) EXPECT_EQ(lmp->atom->nspecial[i][0], 2);
+
+  commands({"special_bonds lj 0 0 0", "run 0 post no"});
+  EXPECT_NEAR(summed(lmp->force->bond->energy), 0.0, 1e-20);
+  EXPECT_NEAR(summed(lmp->force->angle->energy), 0.0, 1e-20);
+  for (tagint t = 1; t <= 21; t++) {
+    const auto f = vector_of(t, lmp->atom->f);
+    EXPECT_LT(std::hypot(f[0], f[1], f[2]), 1e-10) << "node " << t;
+  }
+}
+
+// Continued at a right angle: the joint at the end carries the bending energy of an inner
+// joint bent by pi/2, k_rot (pi/2)^2 / 2 (angle_style wire's closed form); every other
+// joint is straight.
+TEST_F(CreateWireTest, JoinBendsLikeAnInnerJoint)
+{
+  box();
+  commands({"create_wire 1 line -2 0.5 1 0 0.5 1 bond 1 angle 1 mass 0.01 radius 0.02",
+            "create_wire 1 line 0 0.5 1 0 2.5 1 from 11 radius 0.02", "special_bonds lj 0 0 0", "run 0 post no"});
+  EXPECT_EQ(lmp->atom->natoms, 21);
+  EXPECT_NEAR(summed(lmp->force->angle->energy), 0.5 * 0.01 * std::pow(kPi / 2, 2), 1e-12);
+  EXPECT_NEAR(summed(lmp->force->bond->energy), 0.0, 1e-20);
+  // the bridge: a line that starts away from the end is reached by a straight piece first
+  run("create_wire 1 line 0.5 2.5 1 2 2.5 1 from last radius 0.02");
+  auto all = nodes();
+  EXPECT_EQ(lmp->atom->natoms, 31);    // 0.5 of bridge + 1.5 of line: 10 elements
+  EXPECT_NEAR(all.at(22).x[0], 0.2, 1e-12);
+  EXPECT_NEAR(all.at(31).x[0], 2.0, 1e-12);
+  EXPECT_EQ(lmp->atom->nbonds, 30);
+  EXPECT_EQ(lmp->atom->nangles, 29);
+}
+
+// A helix continued from its end by the next layer's riser and helix, as a layered string
+// is laid (doc/create_wire.md): one molecule, one chain, every element at the rest length.
+TEST_F(CreateWireTest, HelixRiserHelixIsOneChain)
+{
+  box();
+  run("create_wire 1 helix 0 0 0.5 2 0.1 turns 2 gap 20 bond 1 angle 1 mass 0.01 radius 0.02");
+  const bigint first = lmp->atom->natoms;
+  commands({"create_wire 1 line 2 0 1 2 0 2 from last radius 0.02",
+            "create_wire 1 helix 0 0 2 2 0.1 turns 2 gap 20 from last radius 0.02"});
+  const bigint n = lmp->atom->natoms;
+  EXPECT_GT(n, 2 * first);
+  EXPECT_EQ(lmp->atom->nbonds, n - 1);
+  EXPECT_EQ(lmp->atom->nangles, n - 2);
+  const auto all = nodes();
+  for (auto &[tag, node] : all) {
+    EXPECT_EQ(node.molecule, 1) << tag;
+    if (tag > 1) EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-9) << tag;
+  }
+}
+
+TEST_F(CreateWireTest, ContinuingFromAnythingButAFreeEndIsRefused)
+{
+  box();
+  commands({"create_wire 1 line -2 0.5 1 0 0.5 1 bond 1 angle 1 mass 0.01 radius 0.02",
+            "bond_coeff 2 100 " + num(2 * 0.5 * std::sin(kPi / 16)),
+            "create_wire 1 loop 0 -2 1 0.5 bond 2 angle 1 mass 0.01 radius 0.02",    // a ring, IDs 12..27
+            "create_atoms 1 single 2 2 2", "group grain id 28", "shapes assign grain shape 1 density 1"});
+  auto refused = [&](const std::string &args, const std::vector<std::string> &parts) {
+    const std::string message = error_of("create_wire " + args);
+    for (const std::string &part : parts) EXPECT_NE(message.find(part), std::string::npos) << args << " -> " << message;
+  };
+  refused("1 line 0 0.5 1 1 0.5 1 from 5 radius 0.02", {"node ID 5 is not a free end", "joins 2 elements",
+                                                         "free ends of molecule 1: ID(s) 1 11"});
+  refused("1 line 0 0.5 1 1 0.5 1 from 15 radius 0.02", {"node ID 15 is not a free end", "closed ring"});
+  refused("1 line 0 0.5 1 1 0.5 1 from 28 radius 0.02", {"atom ID 28 is a grain"});
+  refused("1 line 0 0.5 1 1 0.5 1 from 999 radius 0.02", {"no atom has ID 999"});
+  refused("2 line 0 0.5 1 1 0.5 1 from 11 radius 0.02", {"atom type 2 differs", "give 1"});
+  refused("1 line 0 0.5 1 1 0.5 1 from 11 bond 2 radius 0.02", {"bond type 2 differs"});
+  refused("1 line 0 0.5 1 1 0.5 1 from 11 mol 5 radius 0.02", {"molecule 5 differs"});
+  refused("1 line 0 0.5 1 1 0.5 1 from 11 nodes 6 radius 0.02", {"'nodes' cannot be combined"});
+  refused("1 loop 0 0.5 3 1 from 11 radius 0.02", {"closed ring", "cannot continue"});
+  // back along itself: the new elements lie on the old ones
+  refused("1 line 0 0.5 1 -1.5 0.5 1 from 11 radius 0.02", {"overlaps"});
+  // the wire's first node stores its first bond: the join needs room for a second
+  refused("1 line -2 0.5 1 -2 0.5 2 from 1 radius 0.02", {"node ID 1 stores 1 bond(s)", "extra/bond/per/atom 2"});
+  EXPECT_EQ(lmp->atom->natoms, 28);
+}
+
+// With room for two bonds per atom, a wire continues from its first node just as well.
+TEST_F(CreateWireTest, ContinuesFromEitherEnd)
+{
+  commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+            "region box block -4 4 -4 4 -1 5",
+            "create_box 1 box bond/types 1 angle/types 1 extra/bond/per/atom 2 extra/angle/per/atom 1 "
+            "extra/special/per/atom 6",
+            "bond_style wire", "bond_coeff 1 100 0.2", "angle_style wire", "angle_coeff 1 0.01",
+            "create_wire 1 line -2 0.5 1 0 0.5 1 bond 1 angle 1 mass 0.01 radius 0.02",
+            "create_wire 1 line -2 0.5 1 -2 0.5 2 from 1 radius 0.02", "special_bonds lj 0 0 0", "run 0 post no"});
+  EXPECT_EQ(lmp->atom->natoms, 16);
+  EXPECT_EQ(lmp->atom->nbonds, 15);
+  EXPECT_EQ(lmp->atom->nangles, 14);
+  EXPECT_TRUE(bonds().count({1, 12, 1}));
+  EXPECT_TRUE(angles().count({2, 1, 12, 1}));
+  EXPECT_NEAR(summed(lmp->force->angle->energy), 0.5 * 0.01 * std::pow(kPi / 2, 2), 1e-12);
+}
+
+// fix wire warns at setup about an element far from its rest length (two wires joined by
+// create_bonds with one long element flung a grain), naming it and its length ratio; wires
+// laid by create_wire, continued or strained by a few %, start silent.
+TEST_F(CreateWireTest, FixWireWarnsAboutAnElementFarFromItsRestLength)
+{
+  box();
+  commands({"create_wire 1 helix 0 0 0.5 2 0.1 turns 2 gap 20 bond 1 angle 1 mass 0.01 radius 0.02",
+            "create_wire 1 line 2 0 1 2 0 2 from last radius 0.02",
+            "create_wire 1 helix 0 0 2 2 0.1 turns 2 gap 20 from last radius 0.02",
+            "bond_coeff 2 100 " + num(2 * 0.5 * std::sin(kPi / 16) / 1.03),    // 3 % short of the ring's chord
+            "create_wire 1 loop 0 0 3 0.5 bond 2 angle 1 mass 0.01 radius 0.02 strained yes",
+            "pair_style nscd", "pair_coeff * * 0.5", "timestep 0.001",
+            "fix w all wire radius 0.02 k_n 200 gamma_n 2 k_t 150 gamma_t 1 mu_s 0.5 mu_d 0.4",
+            "group grains empty", "fix solver grains nscd"});
+  std::string log = log_of("run 0 post no");
+  EXPECT_EQ(log.find("rest length"), std::string::npos) << log;
+
+  // a second wire joined to the first by one element 4 x the rest length
+  const tagint n = (tagint) lmp->atom->natoms;
+  commands({"create_wire 1 line -3 3 4 -1 3 4 bond 1 angle 1 mass 0.01 radius 0.02",
+            "create_wire 1 line -0.2 3 4 1.8 3 4 bond 1 angle 1 mass 0.01 radius 0.02",
+            "create_bonds single/bond 1 " + std::to_string(n + 11) + " " + std::to_string(n + 12)});
+  log = log_of("run 0 post no");
+  EXPECT_NE(log.find("1 wire element(s) start more than 10 % away from their rest length"), std::string::npos) << log;
+  EXPECT_NE(log.find("nodes ID " + std::to_string(n + 11) + " and " + std::to_string(n + 12) +
+                     ", is 0.8 long for a rest length of 0.2 (4 x)"), std::string::npos) << log;
 }

@@ -255,3 +255,43 @@ TEST(WirePath, PathTurningBackWithinOneElementIsRefused)
   }
   EXPECT_EQ(lay_polyline(path, 0.9).nodes.size(), 2u);    // (0.9, 0, 0): the rest lies within 0.81 of it
 }
+
+// Continuing a wire from its end: node 0 is the end itself, then a straight bridge to the
+// path's start (none when they coincide), then the path, all at the same chord.
+TEST(WirePath, ContinuedPathStartsAtTheWiresEnd)
+{
+  // the end on the line's start: the line's own nodes, the end first
+  WireLayout w = lay_polyline_from(Vec3(0, 0, 0), PolylinePath{{Vec3(0, 0, 0), Vec3(1, 0, 0)}}, 0.2);
+  ASSERT_EQ(w.nodes.size(), 6u);
+  for (int k = 0; k < 6; k++) expect_vec_near(w.nodes[k], Vec3(0.2 * k, 0, 0), 1e-12);
+  EXPECT_EQ(w.topology.elements.size(), 5u);
+  EXPECT_EQ(w.topology.joints.size(), 4u);
+  // a bridge of 0.5 up to a line along x: 0, 0.2, 0.4 up, then the corner is cut at chord 0.2
+  w = lay_polyline_from(Vec3(0, 0, 0), PolylinePath{{Vec3(0, 0, 0.5), Vec3(1, 0, 0.5)}}, 0.2);
+  EXPECT_EQ(w.nodes[0], Vec3(0, 0, 0));
+  expect_vec_near(w.nodes[2], Vec3(0, 0, 0.4), 1e-12);
+  expect_vec_near(w.nodes[3], Vec3(std::sqrt(0.04 - 0.01), 0, 0.5), 1e-12);
+  expect_chords(w, 0.2, 1e-12);
+  // a helix continued from the point one chord before its start, on its tangent line's side:
+  // the join is one element, then the helix's own nodes
+  LoopPath helix;
+  helix.radius = 2.0;
+  helix.turns = 1.5;
+  helix.pitch = 0.3;
+  const WireLayout alone = lay_loop(helix, 0.2);
+  w = lay_loop_from(Vec3(2.0, -0.2, 0.0), helix, 0.2);
+  ASSERT_EQ(w.nodes.size(), alone.nodes.size() + 1);
+  for (size_t k = 0; k < alone.nodes.size(); k++) expect_vec_near(w.nodes[k + 1], alone.nodes[k], 1e-9);
+  expect_chords(w, 0.2, 1e-12);
+}
+
+TEST(WirePath, ContinuingWithAClosedRingOrTooShortAPathIsRefused)
+{
+  LoopPath ring;
+  ring.radius = 1.0;
+  EXPECT_THROW(lay_loop_from(Vec3(1, 0, 0.5), ring, 0.2), WirePathError);
+  EXPECT_THROW(lay_polyline_from(Vec3(0, 0, 0), PolylinePath{{Vec3(0, 0, 0), Vec3(0.1, 0, 0)}}, 0.2),
+               WirePathError);
+  EXPECT_THROW(lay_polyline_from(Vec3(0, 0, NAN), PolylinePath{{Vec3(0, 0, 0), Vec3(1, 0, 0)}}, 0.2),
+               WirePathError);
+}
