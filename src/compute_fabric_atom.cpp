@@ -20,6 +20,8 @@ enum Column { XX, YY, ZZ, XY, XZ, YZ, COUNT, NCOLUMNS };
 ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
     ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "fabric/atom")
 {
+  with_boundaries = false;    // the papers' fabric: grain-grain contacts
+  with_wire = false;          // 'wire yes' is refused below
   const char *usage = "expected 'compute ID group fabric/atom [contacts active|all] "
                       "[boundaries no|yes] [wire no]'";
   for (int iarg = 3; iarg < narg; iarg += 2) {

@@ -22,7 +22,6 @@ class ComputeFabricAtom : public ComputeNSCDGrainSums {
 
  private:
   bool active_only = true;         // contacts active (default) | all
-  bool with_boundaries = false;    // boundaries no (default) | yes
 
   void normalise_owned();
 };

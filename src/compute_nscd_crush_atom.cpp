@@ -22,9 +22,6 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum Column { FORCE, DIAMETER, TENSILE_STRESS, CRUSH_INDEX, NCOLUMNS };
-// fix wire's contact rows (doc/compute_wire_contacts.md), 0-based
-enum WireColumn { FIRST_NODE = 0, OTHER = 2, KIND = 3, NORMAL_FORCE = 10 };
-constexpr double kWireGrain = 1.0;
 }    // namespace
 
 /* compute ID group nscd/crush/atom S0 [size D0 weibull M] [boundaries yes|no] [wire yes|no] */
@@ -46,16 +43,11 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "{}: keyword '{}' needs a value; {}", where, key, usage);
     const std::string value = arg[iarg + 1];
-    const bool yes_no = value == "yes" || value == "no";
-    if (key == "size" || key == "weibull") {
+    if (parse_contact_keyword(key, value)) {
+    } else if (key == "size" || key == "weibull") {
       const double v = nscd_args::number(lmp, where, key, value);
       if (!(v > 0.0)) error->all(FLERR, "{}: {} {} must be > 0; {}", where, key, value, usage);
       (key == "size" ? reference_size : weibull) = v;
-    } else if (key == "boundaries" && yes_no) {
-      with_boundaries = value == "yes";
-    } else if (key == "wire" && yes_no) {
-      with_wire = value == "yes";
-      wire_asked = with_wire;
     } else {
       error->all(FLERR, "{}: unknown keyword or value '{} {}'; {}", where, key, value, usage);
     }
@@ -63,12 +55,6 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
   if ((reference_size > 0.0) != (weibull > 0.0))
     error->all(FLERR, "{}: the size effect needs both 'size D0' (the size whose strength is S0) and "
                "'weibull M' (the Weibull modulus); give both, or neither for one strength for all sizes", where);
-}
-
-void ComputeNSCDCrushAtom::init()
-{
-  ComputeNSCDGrainSums::init();
-  find_wire(with_wire, wire_asked);
 }
 
 void ComputeNSCDCrushAtom::compute_peratom()
@@ -107,7 +93,8 @@ void ComputeNSCDCrushAtom::add_wire_contacts()
   const size_t cols = FixWire::kContactColumns;
   std::map<std::pair<double, double>, double> per_element;
   for (size_t r = 0; r + cols <= rows.size(); r += cols)
-    if (rows[r + KIND] == kWireGrain) per_element[{rows[r + FIRST_NODE], rows[r + OTHER]}] += rows[r + NORMAL_FORCE];
+    if (rows[r + FixWire::ROW_KIND] == FixWire::kRowWireGrain)
+      per_element[{rows[r + FixWire::ROW_NODE_1], rows[r + FixWire::ROW_OTHER]}] += rows[r + FixWire::ROW_NORMAL_FORCE];
   for (const auto &[key, force] : per_element) add_largest(key.second, force);
 }
 

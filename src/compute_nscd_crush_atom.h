@@ -18,14 +18,12 @@ namespace LAMMPS_NS {
 class ComputeNSCDCrushAtom : public ComputeNSCDGrainSums {
  public:
   ComputeNSCDCrushAtom(class LAMMPS *, int, char **);
-  void init() override;
   void compute_peratom() override;
 
  private:
   double strength = 0.0;          // sigma_0: the strength of a grain of size d_0
   double reference_size = 0.0;    // d_0 (size keyword)
   double weibull = 0.0;           // Weibull modulus m (0: no size effect)
-  bool with_boundaries = true, with_wire = true, wire_asked = false;
 
   void parse(int narg, char **arg);
   void add_largest(double tag, double force);

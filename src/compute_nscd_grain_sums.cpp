@@ -34,15 +34,27 @@ void ComputeNSCDGrainSums::init()
   const auto fixes = modify->get_fix_by_style("^nscd$");
   if (fixes.empty()) error->all(FLERR, "compute {} needs fix nscd (it reads that fix's contacts)", style);
   fix = dynamic_cast<FixNSCD *>(fixes.front());
+  find_wire();
 }
 
-void ComputeNSCDGrainSums::find_wire(bool wanted, bool required)
+bool ComputeNSCDGrainSums::parse_contact_keyword(const std::string &key, const std::string &value)
+{
+  if (value != "yes" && value != "no") return false;
+  if (key == "boundaries") with_boundaries = value == "yes";
+  else if (key == "wire") wire_asked = with_wire = value == "yes";
+  else return false;
+  return true;
+}
+
+/* After the fixes' init: the fix wire whose contacts count, asked to record its contact
+   points (it records them only when asked). */
+void ComputeNSCDGrainSums::find_wire()
 {
   wire = nullptr;
-  if (!wanted) return;
+  if (!with_wire) return;
   for (Fix *f : modify->get_fix_list())
     if (auto *w = dynamic_cast<FixWire *>(f)) wire = w;
-  if (!wire && required)
+  if (!wire && wire_asked)
     error->all(FLERR, "compute {} {}: 'wire yes' needs a fix wire; drop the keyword or define fix wire first",
                style, id);
   if (wire) wire->record_contacts();

@@ -10,6 +10,7 @@
 #include "compute.h"
 
 #include <cstdint>
+#include <string>
 
 namespace LAMMPS_NS {
 
@@ -27,13 +28,15 @@ class ComputeNSCDGrainSums : public Compute {
 
  protected:
   class FixNSCD *fix = nullptr;
-  class FixWire *wire = nullptr;     // set by find_wire: the fix whose wire-grain contacts count
+  class FixWire *wire = nullptr;     // set by init: the fix whose wire-grain contacts count
   const char *style;
+  bool with_boundaries = true;       // boundaries yes|no: wall and plate contacts count
+  bool with_wire = true;             // wire yes|no: wire-grain contacts count (if there is a fix wire)
+  bool wire_asked = false;           // 'wire yes' given: a missing fix wire is an error
   const Combine combine;
 
-  // After the fixes' init: the fix wire if `wanted` (an error if `required` and there is none),
-  // asked to record its contact points (it records them only when asked).
-  void find_wire(bool wanted, bool required);
+  // The keywords 'boundaries yes|no' and 'wire yes|no'; false if `key value` is neither.
+  bool parse_contact_keyword(const std::string &key, const std::string &value);
   // Zeroes the rows of owned and ghost atoms (growing the array as needed) and counts again.
   void start_sums();
   // Combines `row` with the atom of this ID on this rank (owned or ghost): adds it, or keeps
@@ -49,6 +52,7 @@ class ComputeNSCDGrainSums : public Compute {
   bigint last_warning_step = -1;
 
   void combine_into(double *into, const double *row) const;
+  void find_wire();
 };
 
 }    // namespace LAMMPS_NS

@@ -18,9 +18,6 @@ using namespace LAMMPS_NS;
 
 namespace {
 enum Column { XX, YY, ZZ, XY, XZ, YZ, NCOLUMNS };
-// fix wire's contact rows (doc/compute_wire_contacts.md), 0-based
-enum WireColumn { OTHER = 2, KIND = 3, POINT = 4, NORMAL = 7, NORMAL_FORCE = 10, TANGENTIAL_FORCE = 11 };
-constexpr double kWireGrain = 1.0;
 }    // namespace
 
 /* compute ID group nscd/stress/atom [boundaries yes|no] [wire yes|no] [volume grain|none] */
@@ -34,24 +31,13 @@ ComputeNSCDStressAtom::ComputeNSCDStressAtom(LAMMPS *lmp, int narg, char **arg) 
     if (iarg + 1 >= narg)
       error->all(FLERR, "compute nscd/stress/atom: keyword '{}' needs a value; {}", key, usage);
     const std::string value = arg[iarg + 1];
-    const bool yes_no = value == "yes" || value == "no";
-    if (key == "boundaries" && yes_no) {
-      with_boundaries = value == "yes";
-    } else if (key == "wire" && yes_no) {
-      with_wire = value == "yes";
-      wire_asked = with_wire;
+    if (parse_contact_keyword(key, value)) {
     } else if (key == "volume" && (value == "grain" || value == "none")) {
       per_volume = value == "grain";
     } else {
       error->all(FLERR, "compute nscd/stress/atom: unknown keyword or value '{} {}'; {}", key, value, usage);
     }
   }
-}
-
-void ComputeNSCDStressAtom::init()
-{
-  ComputeNSCDGrainSums::init();
-  find_wire(with_wire, wire_asked);
 }
 
 void ComputeNSCDStressAtom::compute_peratom()
@@ -103,10 +89,11 @@ void ComputeNSCDStressAtom::add_wire_contacts()
   const size_t cols = FixWire::kContactColumns;
   for (size_t r = 0; r + cols <= rows.size(); r += cols) {
     const double *row = &rows[r];
-    if (row[KIND] != kWireGrain) continue;
+    if (row[FixWire::ROW_KIND] != FixWire::kRowWireGrain) continue;
     double on_grain[3];
-    for (int k = 0; k < 3; k++) on_grain[k] = -(row[NORMAL_FORCE] * row[NORMAL + k] + row[TANGENTIAL_FORCE + k]);
-    add_force(row[OTHER], on_grain, row + POINT);
+    for (int k = 0; k < 3; k++) on_grain[k] = -(row[FixWire::ROW_NORMAL_FORCE] * row[FixWire::ROW_NORMAL + k] +
+                     row[FixWire::ROW_TANGENTIAL_FORCE + k]);
+    add_force(row[FixWire::ROW_OTHER], on_grain, row + FixWire::ROW_POINT);
   }
 }
 

@@ -19,13 +19,9 @@ namespace LAMMPS_NS {
 class ComputeNSCDStressAtom : public ComputeNSCDGrainSums {
  public:
   ComputeNSCDStressAtom(class LAMMPS *, int, char **);
-  void init() override;
   void compute_peratom() override;
 
  private:
-  bool with_boundaries = true;    // boundaries yes (default) | no
-  bool with_wire = true;          // wire yes (default: when there is a fix wire) | no
-  bool wire_asked = false;        // 'wire yes' given explicitly
   bool per_volume = true;         // volume grain (default): a stress | none: stress x volume
 
   void add_force(double tag, const double *force, const double *point);

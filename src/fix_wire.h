@@ -66,6 +66,9 @@ class FixWire : public Fix {
   // points of the last step computed on this rank, kContactColumns numbers a row
   // (doc/compute_wire_contacts.md).
   static constexpr int kContactColumns = 16;
+  enum ContactColumn { ROW_NODE_1 = 0, ROW_OTHER = 2, ROW_KIND = 3, ROW_POINT = 4, ROW_NORMAL = 7, ROW_NORMAL_FORCE = 10,
+                       ROW_TANGENTIAL_FORCE = 11 };
+  static constexpr double kRowWireGrain = 1.0;    // ROW_KIND of a wire-grain contact
   void record_contacts();
   std::vector<double> contact_rows() const;
 
