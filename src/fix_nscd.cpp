@@ -85,7 +85,7 @@ struct FixNSCD::Solver {
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N]
                      [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V]
-                     [interpenetration F] */
+                     [interpenetration F] [skip_separating yes|no] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
 {
@@ -146,10 +146,15 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov or nncg)", method);
     } else if (key == "coarse") {
       solver->options.coarse_cell = coarse_cell_of(value, lmp);
+    } else if (key == "skip_separating") {
+      const std::string skip = value;
+      if (skip != "yes" && skip != "no")
+        error->all(FLERR, "fix nscd: skip_separating '{}' must be yes or no", skip);
+      solver->options.skip_separating = skip == "yes";
     } else {
       error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
                  "relaxation, check, order, seed, exchange, warn, method, coarse, overlap_speed, "
-                 "interpenetration)", key);
+                 "interpenetration, skip_separating)", key);
     }
   }
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);

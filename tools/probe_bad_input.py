@@ -227,6 +227,7 @@ CASES = [
     ("relaxation 2", deck(BASE, {"fix solver": "fix solver all nscd relaxation 2"}), "error", ["2"]),
     ("order bogus", deck(BASE, {"fix solver": "fix solver all nscd order bogus"}), "error", ["bogus"]),
     ("check 0", deck(BASE, {"fix solver": "fix solver all nscd check 0"}), "error", ["check"]),
+    ("skip_separating maybe", deck(BASE, {"fix solver": "fix solver all nscd skip_separating maybe"}), "error", ["maybe"]),
     ("exchange 0", deck(BASE, {"fix solver": "fix solver all nscd exchange 0"}), "error", ["exchange"]),
     ("fix nscd bogus keyword", deck(BASE, {"fix solver": "fix solver all nscd bogus 1"}), "error", ["bogus"]),
     ("a value missing at the end", deck(BASE, {"fix solver": "fix solver all nscd tolerance"}), "error", ["tolerance"]),

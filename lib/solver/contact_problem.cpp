@@ -184,6 +184,7 @@ void ContactProblem::prepare(const SolverOptions &options)
   rows_.resize(contacts.size());
   order_.resize(contacts.size());
   std::iota(order_.begin(), order_.end(), 0);
+  swept_ = order_;
   random_.seed(options.seed);
   sweeps_done_ = 0;
   local_failures_ = 0;
@@ -365,21 +366,44 @@ void ContactProblem::relax(Row &row)
   sweep_change_ += row.step.squaredNorm();
 }
 
+void ContactProblem::skip_separating_contacts()
+{
+  swept_.clear();
+  for (const int c : order_) {
+    Row &row = rows_[c];
+    // Contacts relax() would leave as they are now: no impulse, and separating beyond the
+    // round-off of their velocities (a pair merely touching, e.g. two grains falling
+    // together, is kept: the next sweep may load it). A skipped contact takes no momentum
+    // either (its last step is not repeated by accelerate()).
+    if (!row.impulse.isZero(0.0)) {
+      swept_.push_back(c);
+      continue;
+    }
+    const Vec3 u = local_velocity(row);
+    if (u[0] > round_off_velocity(row, u)) {
+      row.step.setZero();
+      row.direction.setZero();
+      continue;
+    }
+    swept_.push_back(c);
+  }
+}
+
 void ContactProblem::sweep()
 {
   sweep_change_ = 0.0;
   switch (options_.order) {
   case SweepOrder::shuffled:
-    std::shuffle(order_.begin(), order_.end(), random_);
+    std::shuffle(swept_.begin(), swept_.end(), random_);
     [[fallthrough]];
   case SweepOrder::as_given:
-    for (const int c : order_) relax(rows_[c]);
+    for (const int c : swept_) relax(rows_[c]);
     break;
   case SweepOrder::forward_backward:
     if (sweeps_done_ % 2 == 0)
-      for (auto c = order_.begin(); c != order_.end(); ++c) relax(rows_[*c]);
+      for (auto c = swept_.begin(); c != swept_.end(); ++c) relax(rows_[*c]);
     else
-      for (auto c = order_.rbegin(); c != order_.rend(); ++c) relax(rows_[*c]);
+      for (auto c = swept_.rbegin(); c != swept_.rend(); ++c) relax(rows_[*c]);
     break;
   }
   ++sweeps_done_;
@@ -449,16 +473,9 @@ ResidualTerms ContactProblem::residual_terms() const
     ++terms.contacts;
     if (row.inert) continue;
     const Vec3 u = local_velocity(row);
-    const Vec3 u_free = u - row.delassus * row.impulse;
-    const double scale = row.delassus(0, 0);
-    double error = coulomb_residual(row.delassus, u_free, row.mu, row.impulse, scale);
-    // An error at the round-off of the contact's velocities is none: when every impulse is
-    // itself round-off (a pair that needs no push), error / scale would be a ratio of two
-    // round-offs and hold the solve until max_sweeps, or be +inf when they all came out 0.
-    // (NaN stays NaN.)
-    if (error <= round_off_velocity(row, u_free)) error = 0.0;
+    const double error = contact_error(row, u);
     terms.error_squared += error * error;
-    terms.scale_squared += (scale * row.impulse).squaredNorm();
+    terms.scale_squared += (row.delassus(0, 0) * row.impulse).squaredNorm();
 
     const double gap_end = row.gap_start + theta_dt * (u[0] + row.normal_shift);
     terms.max_interpenetration = std::max(terms.max_interpenetration, -gap_end);
@@ -469,6 +486,30 @@ ResidualTerms ContactProblem::residual_terms() const
     }
   }
   return terms;
+}
+
+// One contact's term of the residual, u its local velocity now.
+double ContactProblem::contact_error(const Row &row, const Vec3 &u) const
+{
+  const Vec3 u_free = u - row.delassus * row.impulse;
+  const double error = coulomb_residual(row.delassus, u_free, row.mu, row.impulse, row.delassus(0, 0));
+  // An error at the round-off of the contact's velocities is none: when every impulse is
+  // itself round-off (a pair that needs no push), error / scale would be a ratio of two
+  // round-offs and hold the solve until max_sweeps, or be +inf when they all came out 0.
+  // (NaN stays NaN.)
+  return error <= round_off_velocity(row, u_free) ? 0.0 : error;
+}
+
+void ContactProblem::contact_residuals(std::vector<double> &error, std::vector<double> &scale) const
+{
+  error.assign(rows_.size(), 0.0);
+  scale.assign(rows_.size(), 0.0);
+  for (std::size_t c = 0; c < rows_.size(); ++c) {
+    const Row &row = rows_[c];
+    if (row.inert) continue;
+    error[c] = contact_error(row, local_velocity(row));
+    scale[c] = (row.delassus(0, 0) * row.impulse).norm();
+  }
 }
 
 void ContactProblem::finish()
@@ -574,6 +615,7 @@ SolveReport iterate(ContactProblem &problem, const SolverOptions &options,
     if (step.stop) break;
     if (step.restart) problem.restart_acceleration();
     if (step.coarse) problem.coarse_correction();
+    if (options.skip_separating) problem.skip_separating_contacts();
     for (;;) {
       problem.sweep();
       ++sweeps;

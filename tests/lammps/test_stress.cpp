@@ -87,9 +87,12 @@ TEST_F(StressTest, PileAtRestSumsToItsWeightTimesItsCentreHeight)
             "fix g all gravity 1.0 vector 0 0 -1", "fix nscd all nscd tolerance 1e-6 max_sweeps 2000",
             "compute s all nscd/stress/atom volume none", "compute r all reduce sum c_s[3]",
             "variable mz atom mass*z", "compute weight all reduce sum v_mz", "compute ke all ke",
-            "thermo_style custom step c_r c_weight c_ke", "run 3000"});
+            "thermo_style custom step c_r c_weight c_ke", "run 1500"});
   const double grains = lmp->atom->natoms;
   ASSERT_GE(grains, 20);
+  // When the last grain stops depends on the path (1750-3500 steps on 1 and 4 ranks, with and
+  // without fix nscd's skip_separating): run on until the pile is at rest, at most 6000 steps.
+  for (int chunk = 0; chunk < 9 && !(value("c_ke") / grains < 1e-8); ++chunk) commands({"run 500"});
   EXPECT_LT(value("c_ke") / grains, 1e-8) << "the pile is not at rest";
   const double expected = -value("c_weight");    // g = 1
   EXPECT_NEAR(value("c_r"), expected, 1e-4 * std::abs(expected));

@@ -941,3 +941,74 @@ TEST(ContactProblem, ShareBelowOneIsRejected)
     EXPECT_NE(std::string(e.what()).find("share 0.5"), std::string::npos) << e.what();
   }
 }
+
+TEST(ContactProblem, SkippedSeparatingContactIsPutBackWhenANeighbourPushesItShut)
+{
+  // Three spheres in a row, touching (masses 1, 3, 3); the first moves at 3 towards the
+  // second, at rest, and the third moves away at 0.1. At the first check the contact between
+  // the second and the third is separating, so the sweeps skip it; the impulse on the
+  // second then drives it into the third, and the next check must put that contact back.
+  // theta = 1: the end gap is the start gap (0), so the contact must not close at all. The
+  // answer is the perfectly inelastic one: all three at (3 + 0.3) / 7.
+  for (const bool skip : {false, true}) {
+    for (const int check_every : {1, 4, 16}) {
+      SolverOptions options = tight_options(0.01);
+      options.theta = 1.0;
+      options.skip_separating = skip;
+      options.check_every = check_every;
+      ContactProblem problem = two_sphere_collision(0.0, 0.0, 3.0, 0.0);
+      SolverBody third = problem.bodies[1];
+      third.position.x() += 1.0;
+      third.velocity.x() = 0.1;
+      problem.bodies.push_back(third);
+      Contact touching = problem.contacts[0];
+      touching.body_i = 2;
+      touching.body_j = 1;
+      touching.point.x() += 1.0;
+      touching.key.tag_i = 3;
+      touching.key.tag_j = 2;
+      problem.contacts.push_back(touching);
+      problem.prepare(options);
+      if (skip) {
+        problem.skip_separating_contacts();
+        EXPECT_EQ(problem.swept_contacts(), 1u);    // only the closing contact
+      }
+      const SolveReport report = iterate(problem, options);
+      ASSERT_TRUE(report.converged) << skip << " " << check_every << ": " << report.residual
+                                    << " after " << report.sweeps;
+      for (int b = 0; b < 3; ++b)
+        EXPECT_NEAR(problem.bodies[b].velocity.x(), 3.3 / 7.0, 1e-8) << b << " " << skip << " " << check_every;
+      EXPECT_EQ(problem.swept_contacts(), 2u);    // both act at the end
+    }
+  }
+}
+
+TEST(ContactProblem, SkippingSeparatingContactsKeepsTheAnswerAndSweepsFewer)
+{
+  // A pyramid of bricks with every brick also "in contact" with a far neighbour that moves
+  // away (contacts found within a neighbour skin that never close): the reactions and the
+  // sweeps are those without the far contacts, and each sweep relaxes only the near ones.
+  const ContactProblem base = brick_pyramid(6, 0.5, 1e-3);
+  ContactProblem with_far = base;
+  const std::size_t near = base.contacts.size();
+  for (std::size_t c = 0; c < near; ++c) {
+    Contact far = base.contacts[c];
+    far.gap = 0.1;    // separated and not approaching: needs no impulse in this step
+    far.key.feature += 1000;
+    with_far.contacts.push_back(far);
+  }
+  SolverOptions options = tight_options();
+  options.tolerance = 1e-8;
+  for (const bool skip : {false, true}) {
+    options.skip_separating = skip;
+    ContactProblem reference = base, problem = with_far;
+    const SolveReport expected = solve(reference, options);
+    const SolveReport report = solve(problem, options);
+    ASSERT_TRUE(expected.converged);
+    ASSERT_TRUE(report.converged) << skip;
+    EXPECT_EQ(problem.swept_contacts(), skip ? near : 2 * near);
+    for (std::size_t b = 0; b < base.bodies.size(); ++b)
+      EXPECT_LT((problem.bodies[b].velocity - reference.bodies[b].velocity).norm(), 1e-6) << b;
+    for (std::size_t c = near; c < 2 * near; ++c) EXPECT_EQ(problem.contacts[c].impulse, Vec3::Zero());
+  }
+}
