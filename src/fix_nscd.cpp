@@ -27,11 +27,13 @@
 #include "update.h"
 
 #include "solver/contact_problem.h"
+#include "solver/problem_file.h"
 #include "solver/rigid_motion.h"
 #include "solver/warm_start.h"
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <cstdint>
 #include <cstdlib>
@@ -85,7 +87,7 @@ struct FixNSCD::Solver {
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N]
                      [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V]
-                     [interpenetration F] [skip_separating yes|no] */
+                     [interpenetration F] [skip_separating yes|no] [write_problem STEP FILE] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
 {
@@ -146,6 +148,12 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov or nncg)", method);
     } else if (key == "coarse") {
       solver->options.coarse_cell = coarse_cell_of(value, lmp);
+    } else if (key == "write_problem") {
+      if (iarg + 2 >= narg)
+        error->all(FLERR, "fix nscd: write_problem needs a step and a file name (write_problem STEP FILE)");
+      problem_step = nscd_args::whole(lmp, "fix nscd", key, value, 0, MAXBIGINT);
+      problem_file = arg[iarg + 2];
+      ++iarg;
     } else if (key == "skip_separating") {
       const std::string skip = value;
       if (skip != "yes" && skip != "no")
@@ -154,7 +162,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     } else {
       error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
                  "relaxation, check, order, seed, exchange, warn, method, coarse, overlap_speed, "
-                 "interpenetration, skip_separating)", key);
+                 "interpenetration, skip_separating, write_problem)", key);
     }
   }
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
@@ -622,6 +630,7 @@ void FixNSCD::count_shares()
 void FixNSCD::prepare_problem()
 {
   solver->options.dt = dt;
+  if (update->ntimestep == problem_step) write_problem();
   try {
     solver->problem.prepare(solver->options);
   } catch (std::exception &e) {    // the solver names local indices; say which grains
@@ -629,6 +638,20 @@ void FixNSCD::prepare_problem()
     error->one(FLERR, "fix nscd: bad contact problem ({}); grains of the first contact: IDs {} "
                "and {}", e.what(), first.key.tag_i, first.key.tag_j);
   }
+}
+
+/* write_problem: this step's contact problem as the solver gets it (before prepare()), one
+   file per rank, for benchmarks/solver/replay_problem (doc/nscd_solver.md). */
+void FixNSCD::write_problem()
+{
+  const std::string name = comm->nprocs > 1 ? fmt::format("{}.{}", problem_file, comm->me) : problem_file;
+  std::ofstream out(name);
+  nscd::write_problem(out, solver->problem, dt, solver->options.theta);
+  out.close();
+  if (!out) error->one(FLERR, "fix nscd: write_problem: cannot write {}", name);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix nscd {}: step {}: contact problem written to {}{}\n", id, update->ntimestep,
+                   problem_file, comm->nprocs > 1 ? ".RANK" : "");
 }
 
 /* Gauss-Seidel sweeps on this rank's contacts; between sweeps the velocity corrections of

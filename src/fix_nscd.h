@@ -15,6 +15,7 @@ FixStyle(nscd,FixNSCD);
 #include "fix.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace nscd {
@@ -64,6 +65,8 @@ class FixNSCD : public Fix {
   double smallest_rounding = 0.0;           // over the group's rounded grains (0: none)
   double warned_depth = 0.0;                // interpenetration of this run's last such warning
   double dt = 0.0;
+  bigint problem_step = -1;     // write_problem: the step whose contact problem is written,
+  std::string problem_file;     //   to this file (.RANK appended on several ranks)
 
   class PairNSCD *pair = nullptr;
   class AtomVecSpheropolyhedron *avec = nullptr;
@@ -100,6 +103,7 @@ class FixNSCD : public Fix {
   bool contacts_may_have_changed_rank();
   void take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers);
   void prepare_problem();
+  void write_problem();
   void solve();
   void count_run_statistics();
   void exchange_velocities();

@@ -1,0 +1,117 @@
+// Solves a contact problem written by fix nscd's write_problem again, alone, with other
+// solver options: sweeps, residual and time (best of --repeat), and with --where the
+// residual at every check split by height (grain-grain | boundary contacts), to see where
+// a hard step's error sits. doc/nscd_solver.md, "Replaying a step".
+//
+//   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
+//                  [--max-sweeps N] [--skip yes|no] [--coarse C] [--repeat N] [--where BINS]
+// Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip yes, no coarse).
+#include "solver/problem_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace nscd;
+
+namespace {
+
+[[noreturn]] void usage(const std::string &why)
+{
+  std::fprintf(stderr, "replay_problem: %s\nusage: replay_problem FILE [--method gs|nesterov|nncg] "
+               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--coarse C] [--repeat N] "
+               "[--where BINS]\n", why.c_str());
+  std::exit(2);
+}
+
+// The residual of every check, its error split into height bins (grain-grain | boundary).
+void print_where(const ProblemFile &file, const SolverOptions &options, int bins)
+{
+  ContactProblem problem = file.problem;
+  problem.prepare(options);
+  double z_low = INFINITY, z_high = -INFINITY;
+  for (const Contact &c : problem.contacts) z_low = std::min(z_low, c.point.z()), z_high = std::max(z_high, c.point.z());
+  const double width = (z_high - z_low) / bins + 1e-300;
+  std::printf("residual at each check; its error by height bin of %.3g from z = %.3g (grain-grain|boundary)\n",
+              width, z_low);
+  int check = 0;
+  std::vector<double> error, scale;
+  SolverCommunication communication;
+  communication.sum = [&](double *values, int n) {
+    if (n != 7) return;    // the residual terms' sums (see reduce())
+    problem.contact_residuals(error, scale);
+    double scale_squared = 0.0;
+    for (double s : scale) scale_squared += s * s;
+    std::vector<double> grains(bins), boundaries(bins);
+    for (std::size_t c = 0; c < error.size(); ++c) {
+      const int bin = std::min(bins - 1, (int) ((problem.contacts[c].point.z() - z_low) / width));
+      (problem.contacts[c].body_j == kEnvironment ? boundaries : grains)[bin] += error[c] * error[c];
+    }
+    std::printf("%5d %.3e |", options.check_every * check++, std::sqrt(values[0] / values[1]));
+    for (int b = 0; b < bins; ++b)
+      std::printf(" %.0e|%.0e", std::sqrt(grains[b] / scale_squared), std::sqrt(boundaries[b] / scale_squared));
+    std::printf("\n");
+  };
+  iterate(problem, options, communication);
+}
+
+}    // namespace
+
+int main(int argc, char **argv)
+{
+  if (argc < 2) usage("no file");
+  SolverOptions options;
+  options.acceleration = Acceleration::nesterov;
+  options.tolerance = 1e-4;
+  options.check_every = 4;
+  options.max_sweeps = 1000;
+  int repeat = 5, where = 0;
+  for (int k = 2; k < argc; k += 2) {
+    const std::string key = argv[k];
+    if (k + 1 >= argc) usage(key + " needs a value");
+    const std::string value = argv[k + 1];
+    if (key == "--method") {
+      if (value == "gs") options.acceleration = Acceleration::none;
+      else if (value == "nesterov") options.acceleration = Acceleration::nesterov;
+      else if (value == "nncg") options.acceleration = Acceleration::nncg;
+      else usage("unknown method " + value);
+    } else if (key == "--tolerance") options.tolerance = std::atof(value.c_str());
+    else if (key == "--check") options.check_every = std::atoi(value.c_str());
+    else if (key == "--max-sweeps") options.max_sweeps = std::atoi(value.c_str());
+    else if (key == "--skip") options.skip_separating = value == "yes";
+    else if (key == "--coarse") options.coarse_cell = std::atof(value.c_str());
+    else if (key == "--repeat") repeat = std::max(1, std::atoi(value.c_str()));
+    else if (key == "--where") where = std::max(1, std::atoi(value.c_str()));
+    else usage("unknown option " + key);
+  }
+  std::ifstream in(argv[1]);
+  if (!in) usage(std::string("cannot open ") + argv[1]);
+  ProblemFile file;
+  try {
+    file = read_problem(in);
+    options.dt = file.dt;
+    options.theta = file.theta;
+    options.validate();
+  } catch (const SolverError &e) {
+    usage(e.what());
+  }
+  SolveReport report;
+  double best = INFINITY;
+  for (int k = 0; k < repeat; ++k) {
+    ContactProblem problem = file.problem;
+    const auto start = std::chrono::steady_clock::now();
+    report = solve(problem, options);
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  long active = report.terms.active;
+  std::printf("%s: %zu bodies, %zu contacts (%ld active at the end): %d sweeps, residual %.6e%s, %.2f ms "
+              "(best of %d)\n", argv[1], file.problem.bodies.size(), file.problem.contacts.size(), active,
+              report.sweeps, report.residual, report.converged ? "" : " (not converged)", 1e3 * best, repeat);
+  if (where) print_where(file, options, where);
+  return 0;
+}

@@ -1,0 +1,27 @@
+// One time step's contact problem as a text file: the bodies and contacts fix nscd hands to
+// the solver (before prepare(): start-of-step velocities, external impulses, warm-start
+// impulses) with the step's dt and theta, so a hard step of a LAMMPS run can be solved
+// again, alone, with other solver options (benchmarks/solver/replay_problem.cpp,
+// doc/nscd_solver.md "Replaying a step"). Doubles are written with 17 significant digits,
+// so a read problem is the written one bit for bit.
+#pragma once
+
+#include "solver/contact_problem.h"
+
+#include <iosfwd>
+
+namespace nscd {
+
+struct ProblemFile {
+  ContactProblem problem;
+  double dt = 0.0;
+  double theta = 1.0;
+};
+
+void write_problem(std::ostream &out, const ContactProblem &problem, double dt, double theta);
+
+// Throws SolverError naming the first field that could not be read (a truncated or damaged
+// file is refused, never half-read).
+ProblemFile read_problem(std::istream &in);
+
+}    // namespace nscd
