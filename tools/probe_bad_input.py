@@ -295,6 +295,18 @@ CASES = [
      "error", ["400"]),
     ("create_wire bogus path", deck(WIRE, {"create_wire": "create_wire 2 spiral 0 0 0.3 bond 1 mass 0.01"}),
      "error", ["spiral"]),
+    # --- create_grains (doc/create_grains.md)
+    ("create_grains type 7", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 7 g shape 1 1 density 1 seed 5 lattice 1.5"]), "error", ['7']),
+    ("create_grains no such region", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 nowhere shape 1 1 density 1 seed 5 lattice 1.5"]), "error", ['nowhere']),
+    ("create_grains seed 0", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 0 lattice 1.5"]), "error", ['seed', '0']),
+    ("create_grains density -1", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density -1 seed 5 lattice 1.5"]), "error", ['density', '-1']),
+    ("create_grains lattice 0", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 5 lattice 0"]), "error", ['lattice', '0']),
+    ("create_grains shape 1 9 (library of 1)", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 9 density 1 seed 5 lattice 1.5"]), "error", ['9']),
+    ("create_grains random 0 10", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 5 random 0 10"]), "error", ['random', '0']),
+    ("create_grains without layout", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 5"]), "error", ['lattice', 'random']),
+    ("create_grains region outside the box", deck(BASE, add=["region far block 3 8 -2 2 2 4 units box", "create_grains 1 far shape 1 1 density 1 seed 5 lattice 1.5"]), "error", ['outside']),
+    ("create_grains bogus keyword", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 5 lattice 1.5 color red"]), "error", ['color']),
+    ("create_grains gap -1", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 5 lattice 1.5 gap -1"]), "error", ['gap', '-1']),
     # --- issue 25: numbers given to keywords
     ("tolerance nan", deck(BASE, {"fix solver": "fix solver all nscd tolerance nan"}), "error", ["tolerance", "nan"]),
     ("max_sweeps 2.5", deck(BASE, {"fix solver": "fix solver all nscd max_sweeps 2.5"}), "error", ["max_sweeps", "2.5"]),
