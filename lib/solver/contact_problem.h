@@ -12,6 +12,7 @@
 //   repeat {
 //     terms = reduce(problem.residual_terms());     // at a check (every check_every sweeps)
 //     decide (SolveControl): stop, remember/restore impulses, coarse correction, restart
+//     problem.skip_separating_contacts();           // at a check, if options.skip_separating
 //     problem.sweep();                              // one pass over the local contacts
 //     problem.accelerate(sum(problem.sweep_change()));    // if options.acceleration
 //     exchange();                                   // every exchange_every sweeps and before a check
