@@ -18,6 +18,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 namespace {
 enum Output { HEIGHT, RETAINED_FRACTION, RETAINED, GRAINS, TOP, NOUTPUTS };

@@ -40,6 +40,8 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 using namespace FixConst;
 
 namespace {

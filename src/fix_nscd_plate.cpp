@@ -23,6 +23,8 @@
 #include <deque>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, WINDOW_SINK, PEAK_FORCE, PEAK_DISPLACEMENT, FAILED, FAILURE_LOAD,

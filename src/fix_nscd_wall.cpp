@@ -19,6 +19,8 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 
 namespace {
 nscd::Vec3 read_vec3(LAMMPS *lmp, const char *what, char **arg)

@@ -1,7 +1,10 @@
-/* fix wire: the wire subcycle of lib/wire driven from LAMMPS' post_force. Gathers the wire
-   nodes, grains and boundaries, calls lib/wire (wire_step.h: Gear-5 subcycle, elastic
-   forces, contact_model.h), scatters the forces; LAMMPS' communication, restart and
-   output. The physics is in lib/wire (doc/wire_model.md). */
+/* fix wire's setup and step. Setup: the checks of the partners (pair, bonds, angles, fixes
+   acting on the nodes), the boundaries, the substep plan and the contact model. The step, in
+   post_force: gathers the wire nodes, grains and boundaries, runs lib/wire's step
+   (wire_step.h: Gear-5 subcycle, elastic forces, contact_model.h), which integrates the nodes,
+   stores their positions and velocities, and hands the mean wire forces to the grains and the
+   boundaries. Communication, per-atom arrays, restart and output: fix_wire_io.cpp; breaking:
+   fix_wire_break.cpp. The physics is in lib/wire (doc/wire_model.md). */
 
 #include "fix_wire.h"
 #include "nscd_args.h"
@@ -38,6 +41,8 @@
 #include <map>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 using namespace FixConst;
 using nscd::Vec3;
 namespace wire = nscd::wire;
@@ -182,8 +187,6 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
 }
 
 int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
-double FixWire::substep() const { return lib->plan.dt_sp; }
-int FixWire::substeps() const { return lib->plan.substeps; }
 double FixWire::compute_vector(int n) { return diagnostics[n]; }
 
 void *FixWire::extract(const char *name, int &dim)

@@ -29,6 +29,8 @@
 #include <utility>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 
 struct PairNSCD::Found {
   std::vector<nscd::Contact> contacts;
