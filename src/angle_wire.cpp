@@ -18,6 +18,7 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 AngleWire::AngleWire(LAMMPS *lmp) : Angle(lmp) {}
 

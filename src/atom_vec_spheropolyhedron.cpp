@@ -17,6 +17,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 namespace {
 const char *const kStyleName = "spheropolyhedron";

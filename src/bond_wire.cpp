@@ -18,6 +18,7 @@
 #include <string>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 namespace {
 // What bond_coeff and the restart reader both refuse ("" if the values are fine).

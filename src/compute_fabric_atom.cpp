@@ -16,14 +16,13 @@ namespace {
 enum Column { XX, YY, ZZ, XY, XZ, YZ, COUNT, NCOLUMNS };
 }
 
-/* compute ID group fabric/atom [contacts active|all] [boundaries no|yes] [wire no] */
+/* compute ID group fabric/atom [contacts active|all] [boundaries no|yes] */
 ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
     ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "fabric/atom")
 {
   with_boundaries = false;    // the papers' fabric: grain-grain contacts
-  with_wire = false;          // 'wire yes' is refused below
-  const char *usage = "expected 'compute ID group fabric/atom [contacts active|all] "
-                      "[boundaries no|yes] [wire no]'";
+  with_wire = false;          // never wire-grain contacts: the keyword 'wire' is refused below
+  const char *usage = "expected 'compute ID group fabric/atom [contacts active|all] [boundaries no|yes]'";
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg)
@@ -33,12 +32,10 @@ ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
       active_only = value == "active";
     } else if (key == "boundaries" && (value == "yes" || value == "no")) {
       with_boundaries = value == "yes";
-    } else if (key == "wire" && value == "no") {
-      // the default; wire contacts need compute wire/contacts' data, which fix wire does not
-      // publish yet
-    } else if (key == "wire" && value == "yes") {
-      error->all(FLERR, "compute fabric/atom: 'wire yes' is not available yet: fix wire does "
-                 "not publish its wire-grain contacts; use 'wire no' (the default)");
+    } else if (key == "wire") {
+      error->all(FLERR, "compute fabric/atom: 'wire {}': the fabric is of grain-grain contacts (with "
+                 "'boundaries yes' also walls and the plate), never wire-grain ones; drop the keyword "
+                 "(compute wire/contacts gives the wire's contacts)", value);
     } else {
       error->all(FLERR, "compute fabric/atom: unknown keyword or value '{} {}'; {}", key, value, usage);
     }

@@ -18,6 +18,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 namespace {
 enum Output { HEIGHT, RETAINED_FRACTION, RETAINED, GRAINS, TOP, NOUTPUTS };
@@ -37,8 +38,9 @@ ComputeNSCDColumn::ComputeNSCDColumn(LAMMPS *lmp, int narg, char **arg) : Comput
                arg[3], arg[4], arg[5]);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "compute nscd/column: keyword '{}' needs a value", key);
-    const double value = nscd_args::number(lmp, "compute nscd/column", key, arg[iarg + 1]);
+    const std::string text =
+        nscd_args::keyword_value(lmp, "compute nscd/column", narg, arg, iarg, {"floor", "percentile"});
+    const double value = nscd_args::number(lmp, "compute nscd/column", key, text);
     if (key == "floor") {
       if (!std::isfinite(value)) error->all(FLERR, "compute nscd/column: floor {} must be finite", arg[iarg + 1]);
       floor_z = value;
@@ -46,8 +48,6 @@ ComputeNSCDColumn::ComputeNSCDColumn(LAMMPS *lmp, int narg, char **arg) : Comput
       if (!(value > 0.0 && value <= 100.0))
         error->all(FLERR, "compute nscd/column: percentile {} must be in (0, 100]", arg[iarg + 1]);
       percentile = value;
-    } else {
-      error->all(FLERR, "compute nscd/column: unknown keyword '{}' (expected floor, percentile)", key);
     }
   }
   avec = AtomVecSpheropolyhedron::find(lmp, "compute nscd/column");    // (also for use before a run)

@@ -20,6 +20,7 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 namespace {
 // one row per contact point

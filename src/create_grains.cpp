@@ -28,6 +28,7 @@
 #include <string>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 struct CreateGrains::Request {
   int type = 0;

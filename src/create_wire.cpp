@@ -38,6 +38,7 @@
 #include <sstream>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
 
 namespace {
 constexpr double kDegree = M_PI / 180.0;

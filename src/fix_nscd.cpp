@@ -2,6 +2,7 @@
    ghost exchanges between sweeps, and moves the grains (Moreau-Jean). */
 
 #include "fix_nscd.h"
+#include "nscd_checks.h"
 #include "nscd_args.h"
 #include "nscd_units.h"
 
@@ -42,6 +43,8 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 using namespace FixConst;
 
 namespace {
@@ -199,10 +202,7 @@ void FixNSCD::init()
                "'pair_style nscd' and 'pair_coeff * * FRICTION'");
   if (!pair->compute_flag)
     error->all(FLERR, "fix nscd: pair_modify compute no switches off contact detection; remove it");
-  for (Fix *other : modify->get_fix_list())
-    if (other != this && dynamic_cast<FixNSCD *>(other))
-      error->all(FLERR, "fix nscd: only one fix nscd may be defined ({} and {}); one solver "
-                 "handles all grains and boundaries", other->id, id);
+  nscd_checks::refuse_second_instance<FixNSCD>(lmp, this, "one solver handles all grains and boundaries");
   if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
   nscd_units::require_plain_mechanics(lmp, "fix nscd");
   if (utils::strmatch(update->integrate_style, "^respa"))
@@ -242,12 +242,10 @@ void FixNSCD::check_no_other_integrator()
 {
   for (Fix *other : modify->get_fix_list()) {
     if (other == this || !other->time_integrate) continue;
-    tagint first_shared = MAXTAGINT, any_shared;
-    for (int i = 0; i < atom->nlocal; i++)
-      if ((atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit) && avec->shape[i] != 0)
-        first_shared = std::min(first_shared, atom->tag[i]);
-    MPI_Allreduce(&first_shared, &any_shared, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-    if (any_shared != MAXTAGINT)
+    const tagint any_shared = nscd_checks::lowest_tag_where(lmp, [&](int i) {
+      return (atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit) && avec->shape[i] != 0;
+    });
+    if (any_shared)
       error->all(FLERR, "fix nscd: fix {} ({}) also moves grain ID {}, which fix nscd integrates: "
                  "the grains would move twice per step; remove fix {} or give it a group "
                  "without the grains", other->id, other->style, any_shared, other->id);
@@ -259,7 +257,7 @@ void FixNSCD::check_no_other_integrator()
 void FixNSCD::check_no_bonds_on_grains()
 {
   if (!atom->molecular) return;
-  tagint bad[2] = {MAXTAGINT, MAXTAGINT}, any[2];
+  tagint bad[2] = {MAXTAGINT, MAXTAGINT};
   auto note = [&](const int *atoms, int n) {
     for (int k = 0; k < n; k++)
       if (avec->shape[atoms[k]] != 0 && atom->tag[atoms[k]] < bad[0]) {
@@ -273,13 +271,12 @@ void FixNSCD::check_no_bonds_on_grains()
     for (int n = 0; n < neighbor->nbondlist; n++) note(neighbor->bondlist[n], 2);
   if (force->angle)
     for (int n = 0; n < neighbor->nanglelist; n++) note(neighbor->anglelist[n], 3);
-  MPI_Allreduce(&bad[0], &any[0], 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (any[0] == MAXTAGINT) return;
-  if (bad[0] != any[0]) bad[1] = MAXTAGINT;
-  MPI_Allreduce(&bad[1], &any[1], 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  const tagint grain = nscd_checks::lowest_tag_of_all(world, bad[0]);
+  if (grain == MAXTAGINT) return;
+  const tagint partner = nscd_checks::lowest_tag_of_all(world, bad[0] == grain ? bad[1] : MAXTAGINT);
   error->all(FLERR, "fix nscd: grain ID {} is in a bond or angle (with atom ID {}); bonds and "
              "angles join wire nodes (shape 0) only, grains are rigid bodies moved by contacts",
-             any[0], any[1]);
+             grain, partner);
 }
 
 /* Overlap present at the start is not pushed apart by the solver (contacts only stop
@@ -318,11 +315,9 @@ void FixNSCD::warn_if_grains_overlap()
    Also catches points made during a run (fix pour/deposit create shape 0). */
 void FixNSCD::check_no_points_in_group()
 {
-  tagint first_point = MAXTAGINT, any_point;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && avec->shape[i] == 0) first_point = std::min(first_point, atom->tag[i]);
-  MPI_Allreduce(&first_point, &any_point, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (any_point != MAXTAGINT)
+  const tagint any_point =
+      nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] == 0; });
+  if (any_point)
     error->all(FLERR, "fix nscd: atom ID {} in group '{}' is a point (shape 0), not a grain; "
                "give it a shape ('shapes assign') or use a group of grains only", any_point,
                group->names[igroup]);
@@ -332,19 +327,17 @@ void FixNSCD::check_no_points_in_group()
    `set diameter`, `set density`): refuse grains whose data no longer match their shape. */
 void FixNSCD::check_grains_are_consistent()
 {
-  tagint first_bad = MAXTAGINT, any_bad;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) continue;
+  const tagint any_bad = nscd_checks::lowest_tag_where(lmp, [&](int i) {
+    if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) return false;
     const nscd::Spheropolyhedron &s = avec->shape_of(i);
     const double density = avec->rmass[i] / s.volume;
     bool ok = std::abs(avec->radius[i] - s.bounding_radius) <= 1e-12 * s.bounding_radius;
     for (int k = 0; k < 3; k++)
       ok = ok && std::abs(avec->inertia[i][k] - density * s.principal_inertia[k]) <=
               1e-10 * density * s.principal_inertia.maxCoeff();
-    if (!ok) first_bad = std::min(first_bad, atom->tag[i]);
-  }
-  MPI_Allreduce(&first_bad, &any_bad, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (any_bad != MAXTAGINT)
+    return !ok;
+  });
+  if (any_bad)
     error->all(FLERR, "fix nscd: grain ID {} has a mass, inertia or radius that does not match "
                "its shape (changed by 'set'?); set mass and shape with 'shapes assign ... "
                "density|mass'", any_bad);
@@ -992,18 +985,13 @@ void FixNSCD::write_restart(FILE *fp)
 /* read_restart hands every rank the block written above (without its size). */
 void FixNSCD::restart(char *bytes)
 {
-  nscd_restart::SolverBlock block;
-  try {
-    block = nscd_restart::read_solver_block(bytes, nscd_restart::kUnknownSize);
-  } catch (nscd_restart::Damaged &e) {
-    error->all(FLERR, "fix nscd {}: its restart block cannot be used: {}. To start without the stored warm "
-               "start, define fix nscd with another ID", id, e.what());
-  }
+  nscd_restart::SolverBlock block = nscd_checks::read_restart_block(
+      lmp, this, nscd_restart::read_solver_block, bytes,
+      "To start without the stored warm start, define fix nscd with another ID");
   if (!block.read) {
-    if (comm->me == 0)
-      error->warning(FLERR, "fix nscd {}: the restart file holds the warm start in format {}, whose length this "
-                     "build cannot check; it is not read (the first step starts from zero impulses; write the "
-                     "restart again with this build to keep it)", id, block.format);
+    nscd_checks::warn_format_not_read(lmp, this, "the warm start", block.format,
+                                      "; it is not read (the first step starts from zero impulses; write the "
+                                      "restart again with this build to keep it)");
     return;
   }
   // The impulses' timestep, so that a run at another `timestep` starts from the same forces

@@ -2,6 +2,7 @@
    and its motion along z. */
 
 #include "fix_nscd_plate.h"
+#include "nscd_checks.h"
 #include "nscd_args.h"
 
 #include "atom.h"
@@ -23,6 +24,8 @@
 #include <deque>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, WINDOW_SINK, PEAK_FORCE, PEAK_DISPLACEMENT, FAILED, FAILURE_LOAD,
@@ -97,8 +100,10 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
                "the order of a body's momentum); change the mass unit", p.mass, nscd::kMinBodyMass, nscd::kMaxBodyMass);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    if (iarg + 1 >= narg) error->all(FLERR, "fix nscd/plate: keyword '{}' needs a value", key);
-    const double value = nscd_args::number(lmp, "fix nscd/plate", key, arg[iarg + 1]);
+    const std::string text = nscd_args::keyword_value(
+        lmp, "fix nscd/plate", narg, arg, iarg,
+        {"load", "rate", "gravity", "friction", "restitution", "fail_sink", "fail_window"});
+    const double value = nscd_args::number(lmp, "fix nscd/plate", key, text);
     if (!std::isfinite(value))
       error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
     if (key == "fail_window") {
@@ -115,9 +120,6 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
     else if (key == "gravity") p.gravity = value;
     else if (key == "friction") p.friction = value;
     else if (key == "restitution") p.restitution = value;
-    else
-      error->all(FLERR, "fix nscd/plate: unknown keyword '{}' (expected load, rate, gravity, "
-                 "friction, restitution, fail_sink, fail_window)", key);
   }
   if ((p.fail_window > 0) != (p.fail_sink > 0.0))
     error->all(FLERR, "fix nscd/plate: fail_sink and fail_window go together (the plate fails when it sinks "
@@ -150,11 +152,9 @@ void FixNSCDPlate::init()
 void FixNSCDPlate::setup(int /*vflag*/)
 {
   const double z = plate->z;
-  tagint first_above = MAXTAGINT, any_above;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && atom->x[i][2] >= z) first_above = std::min(first_above, atom->tag[i]);
-  MPI_Allreduce(&first_above, &any_above, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (any_above != MAXTAGINT)
+  const tagint any_above =
+      nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && atom->x[i][2] >= z; });
+  if (any_above)
     error->all(FLERR, "fix nscd/plate {}: atom ID {} is above the plate (z = {}); put the plate "
                "above all grains and wire nodes of its group", id, any_above, z);
 }
@@ -303,13 +303,9 @@ void FixNSCDPlate::write_restart(FILE *fp)
 
 void FixNSCDPlate::restart(char *bytes)
 {
-  nscd_restart::PlateBlock block;
-  try {
-    block = nscd_restart::read_plate_block(bytes, nscd_restart::kUnknownSize);
-  } catch (nscd_restart::Damaged &e) {
-    error->all(FLERR, "fix nscd/plate {}: its restart block cannot be used: {}. To start from the plate "
-               "given in the deck, define it with another fix ID", id, e.what());
-  }
+  const nscd_restart::PlateBlock block = nscd_checks::read_restart_block(
+      lmp, this, nscd_restart::read_plate_block, bytes,
+      "To start from the plate given in the deck, define it with another fix ID");
   plate->z = block.z;
   plate->vz = block.vz;
   plate->elapsed = block.elapsed;

@@ -1,6 +1,7 @@
 /* fix nscd/wall: the wall's contacts with owned grains, via lib/geometry. */
 
 #include "fix_nscd_wall.h"
+#include "nscd_checks.h"
 #include "nscd_args.h"
 
 #include "atom.h"
@@ -19,6 +20,8 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 
 namespace {
 nscd::Vec3 read_vec3(LAMMPS *lmp, const char *what, char **arg)
@@ -159,13 +162,9 @@ void FixNSCDWall::init()
    wrong atom. */
 void FixNSCDWall::setup(int /*vflag*/)
 {
-  tagint first_outside = MAXTAGINT, any_outside;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    if (!wall->inside(vec3(atom->x[i]))) first_outside = std::min(first_outside, atom->tag[i]);
-  }
-  MPI_Allreduce(&first_outside, &any_outside, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (any_outside != MAXTAGINT)
+  const tagint any_outside = nscd_checks::lowest_tag_where(
+      lmp, [&](int i) { return (atom->mask[i] & groupbit) && !wall->inside(vec3(atom->x[i])); });
+  if (any_outside)
     error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); "
                "check the wall's position and that its normal points into the domain", id,
                any_outside, wall->kind == Wall::Kind::plane ? "behind the plane" : "outside the cylinder");
@@ -284,13 +283,9 @@ void FixNSCDWall::write_restart(FILE *fp)
 
 void FixNSCDWall::restart(char *bytes)
 {
-  nscd_restart::WallBlock block;
-  try {
-    block = nscd_restart::read_wall_block(bytes, nscd_restart::kUnknownSize);
-  } catch (nscd_restart::Damaged &e) {
-    error->all(FLERR, "fix nscd/wall {}: its restart block cannot be used: {}. To start from the position "
-               "given in the deck, define the wall with another fix ID", id, e.what());
-  }
+  const nscd_restart::WallBlock block = nscd_checks::read_restart_block(
+      lmp, this, nscd_restart::read_wall_block, bytes,
+      "To start from the position given in the deck, define the wall with another fix ID");
   if (block.cylinder != (wall->kind == Wall::Kind::cylinder)) {
     if (comm->me == 0)
       error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "

@@ -1,9 +1,13 @@
-/* fix wire: the wire subcycle of lib/wire driven from LAMMPS' post_force. Gathers the wire
-   nodes, grains and boundaries, calls lib/wire (wire_step.h: Gear-5 subcycle, elastic
-   forces, contact_model.h), scatters the forces; LAMMPS' communication, restart and
-   output. The physics is in lib/wire (doc/wire_model.md). */
+/* fix wire's setup and step. Setup: the checks of the partners (pair, bonds, angles, fixes
+   acting on the nodes), the boundaries, the substep plan and the contact model. The step, in
+   post_force: gathers the wire nodes, grains and boundaries, runs lib/wire's step
+   (wire_step.h: Gear-5 subcycle, elastic forces, contact_model.h), which integrates the nodes,
+   stores their positions and velocities, and hands the mean wire forces to the grains and the
+   boundaries. Communication, per-atom arrays, restart and output: fix_wire_io.cpp; breaking:
+   fix_wire_break.cpp. The physics is in lib/wire (doc/wire_model.md). */
 
 #include "fix_wire.h"
+#include "nscd_checks.h"
 #include "nscd_args.h"
 #include "nscd_units.h"
 #include "fix_wire_lib.h"
@@ -38,6 +42,8 @@
 #include <map>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 using namespace FixConst;
 using nscd::Vec3;
 namespace wire = nscd::wire;
@@ -182,8 +188,6 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
 }
 
 int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
-double FixWire::substep() const { return lib->plan.dt_sp; }
-int FixWire::substeps() const { return lib->plan.substeps; }
 double FixWire::compute_vector(int n) { return diagnostics[n]; }
 
 void *FixWire::extract(const char *name, int &dim)
@@ -198,10 +202,7 @@ void *FixWire::extract(const char *name, int &dim)
 
 void FixWire::init()
 {
-  for (Fix *other : modify->get_fix_list())
-    if (other != this && dynamic_cast<FixWire *>(other))
-      error->all(FLERR, "fix wire: only one fix wire may be defined ({} and {}); one fix handles "
-                 "all wire nodes and their contacts", other->id, id);
+  nscd_checks::refuse_second_instance<FixWire>(lmp, this, "one fix handles all wire nodes and their contacts");
   if (update->whichflag == 2)
     error->all(FLERR, "fix wire cannot take part in 'minimize': it integrates the wire nodes on its "
                "own subcycle and has no minimizer forces; unfix it before minimize (or relax the wire "
@@ -237,11 +238,9 @@ void FixWire::check_partners()
   if (atom->nangles > 0 && !angle)
     error->all(FLERR, "fix wire needs angle_style wire for its joints (angle_style is '{}')",
                force->angle_style ? force->angle_style : "none");
-  tagint first_grain = MAXTAGINT, any_grain;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((atom->mask[i] & groupbit) && avec->shape[i] != 0) first_grain = std::min(first_grain, atom->tag[i]);
-  MPI_Allreduce(&first_grain, &any_grain, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-  if (any_grain != MAXTAGINT)
+  const tagint any_grain =
+      nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] != 0; });
+  if (any_grain)
     error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the group must "
                "hold wire nodes (shape 0) only, grains belong to fix nscd", any_grain, group->names[igroup]);
   // post_force fixes after this one on its nodes change forces the subcycle has already used

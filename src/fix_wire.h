@@ -1,9 +1,9 @@
 /* fix wire: integrates elastic wire nodes (atoms of shape 0 joined by bond_style wire and
    angle_style wire) with the Gear-5 predictor-corrector on a subcycle of n substeps per
    LAMMPS step (lib/wire/subcycle.h), with soft wire-wire, wire-grain and wire-boundary
-   contacts (lib/wire/contact_model.h). This file is glue: it gathers the nodes, grains and
-   boundaries, calls lib/wire and scatters the forces, and does LAMMPS' communication,
-   restart and output. The wire->grain forces and torques averaged over the substeps go to
+   contacts (lib/wire/contact_model.h). The style is glue: it gathers the nodes, grains and
+   boundaries, calls lib/wire, stores the nodes' new positions and velocities and hands out
+   the forces, and does LAMMPS' communication, restart and output. The wire->grain forces and torques averaged over the substeps go to
    the grains' f and torque in post_force, so fix nscd takes them as external forces.
    See doc/fix_wire.md. Only LAMMPS headers here: lib/ stays behind a pointer. */
 
@@ -72,14 +72,12 @@ class FixWire : public Fix {
   void record_contacts();
   std::vector<double> contact_rows() const;
 
-  double substep() const;
-  int substeps() const;
   // "radius" (create_wire's default), "k_n" (0: no contacts): pointers to doubles, dim 0.
   void *extract(const char *, int &) override;
   void pre_exchange() override;
 
  private:
-  struct Lib;                   // lib/wire state (fix_wire.cpp)
+  struct Lib;                   // lib/wire state (fix_wire_lib.h)
   std::unique_ptr<Lib> lib;
 
   // Gear state per atom: 18 scaled derivatives, then 1 if the state is initialised.

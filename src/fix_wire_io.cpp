@@ -13,6 +13,7 @@
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
+#include "nscd_checks.h"
 #include "nscd_gather.h"
 #include "nscd_restart_blocks.h"
 #include "nscd_timing.h"
@@ -216,19 +217,13 @@ void FixWire::write_restart(FILE *fp)
 /* read_restart hands every rank the whole block; hand_over_memories() keeps the own ones. */
 void FixWire::restart(char *bytes)
 {
-  nscd_restart::WireBlock block;
-  try {
-    block = nscd_restart::read_wire_block(bytes, nscd_restart::kUnknownSize);
-  } catch (nscd_restart::Damaged &e) {
-    error->all(FLERR, "fix wire {}: its restart block cannot be used: {}. To start without the stored "
-               "friction memories, define fix wire with another ID", id, e.what());
-  }
+  nscd_restart::WireBlock block = nscd_checks::read_restart_block(
+      lmp, this, nscd_restart::read_wire_block, bytes,
+      "To start without the stored friction memories, define fix wire with another ID");
   state_dt = block.dt;
   if (!block.memories_read) {
-    if (comm->me == 0)
-      error->warning(FLERR, "fix wire {}: the restart file holds the wire in format {}, whose length this build "
-                     "cannot check: its contacts' friction springs are not read (they start again from zero)",
-                     id, block.format);
+    nscd_checks::warn_format_not_read(lmp, this, "the wire", block.format,
+                                      ": its contacts' friction springs are not read (they start again from zero)");
     return;
   }
   lib->restored = std::move(block.memories);

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace nscd_args {
@@ -54,6 +55,24 @@ inline long long whole(LAMMPS *lmp, const std::string &where, const std::string 
   if (errno == ERANGE || n < lo || n > hi)
     lmp->error->all(FLERR, "{}: {} {} must be between {} and {}", where, key, text, lo, hi);
   return n;
+}
+
+// The value after the keyword arg[iarg] of `where` (e.g. "fix nscd/plate"), once the keyword
+// is known to be one of `known`: a misspelled keyword is named as such, not as a value that
+// is not a number. Stops naming the keyword and the list, or the keyword without a value.
+inline std::string keyword_value(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
+                                 const std::vector<std::string> &known)
+{
+  const std::string key = arg[iarg];
+  bool found = false;
+  std::string list;
+  for (const std::string &k : known) {
+    found = found || k == key;
+    list += (list.empty() ? "" : ", ") + k;
+  }
+  if (!found) lmp->error->all(FLERR, "{}: unknown keyword '{}' (expected {})", where, key, list);
+  if (iarg + 1 >= narg) lmp->error->all(FLERR, "{}: keyword '{}' needs a value", where, key);
+  return arg[iarg + 1];
 }
 
 }    // namespace nscd_args

@@ -1,5 +1,6 @@
 /* Conversions between LAMMPS' per-atom arrays (double[3], double[4]) and the Eigen types of
-   lib/, shared by every style of the package. */
+   lib/, shared by every style of the package; a .cpp names them with
+   `using namespace nscd_arrays;`. */
 
 #ifndef LMP_NSCD_ARRAYS_H
 #define LMP_NSCD_ARRAYS_H
@@ -7,6 +8,7 @@
 #include "math/types.h"
 
 namespace LAMMPS_NS {
+namespace nscd_arrays {
 
 inline nscd::Vec3 vec3(const double *a)
 {
@@ -32,6 +34,7 @@ inline void add_to(double *a, const nscd::Vec3 &v)
   a[2] += v.z();
 }
 
+}    // namespace nscd_arrays
 }    // namespace LAMMPS_NS
 
 #endif

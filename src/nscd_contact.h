@@ -1,5 +1,6 @@
 /* One place that turns a geometric contact point into a contact of the NSCD problem, for
-   every style that finds contacts (pair_style nscd, fix nscd/wall). */
+   every style that finds contacts (pair_style nscd, fix nscd/wall, fix nscd/plate), in the
+   namespace nscd_contact. */
 
 #ifndef LMP_NSCD_CONTACT_H
 #define LMP_NSCD_CONTACT_H
@@ -13,6 +14,7 @@
 #include <cstdint>
 
 namespace LAMMPS_NS {
+namespace nscd_contact {
 
 // Speculative activation. Bodies closing at up to `closing_speed` (relative speed of their
 // centres plus each one's spin times its bounding radius) close a gap of up to that times
@@ -70,6 +72,7 @@ inline std::int64_t boundary_tag(const char *fix_id)
   return -(std::int64_t) (h >> 2) - 1;
 }
 
+}    // namespace nscd_contact
 }    // namespace LAMMPS_NS
 
 #endif

@@ -1,5 +1,5 @@
-/* Restart blocks of this package: a header that names them and gives their size, and a
-   reader that never reads past the size and refuses anything it cannot check.
+/* Restart blocks of this package: a header that marks them as this package's and gives
+   their format and size, and a reader that never reads past the size and refuses anything it cannot check.
 
    A global fix block, as LAMMPS writes it, is: the size in bytes of what follows (int,
    LAMMPS' own field), then our header {kMagic, version} (two int32), then, from the
@@ -10,7 +10,8 @@
    trusted. (Only a size and a count damaged alike, or LAMMPS' own size field, could still
    lead the reader astray; LAMMPS' own check of the file's end catches most of the latter.)
    Blocks that do not begin with kMagic (damaged, or written before blocks carried a
-   format) are refused.
+   format) are refused; the one exception is fix wire's format 2, which began with the
+   number -2 and is recognised by it (read_wire_block in nscd_restart_blocks.cpp).
 
    Plain C++ (no LAMMPS header): the fuzz targets of tests/fuzz read blocks with it. */
 

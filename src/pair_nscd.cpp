@@ -29,6 +29,8 @@
 #include <utility>
 
 using namespace LAMMPS_NS;
+using namespace nscd_arrays;
+using namespace nscd_contact;
 
 struct PairNSCD::Found {
   std::vector<nscd::Contact> contacts;
@@ -92,10 +94,10 @@ void PairNSCD::settings(int narg, char **arg)
     given_as = now;
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
-    if (iarg + 1 >= narg)
-      error->all(FLERR, "Illegal pair_style nscd command: keyword '{}' needs a value", arg[iarg]);
     // (the text as given in the messages: older LAMMPS parse 1e400 as inf without a word)
-    const double value = nscd_args::number(lmp, "pair_style nscd", arg[iarg], arg[iarg + 1]);
+    const std::string text = nscd_args::keyword_value(lmp, "pair_style nscd", narg, arg, iarg,
+                                                      {"activation", "activation/fraction", "reach", "reach/fraction"});
+    const double value = nscd_args::number(lmp, "pair_style nscd", arg[iarg], text);
     if (strcmp(arg[iarg], "activation") == 0) {
       once(activation_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
@@ -121,9 +123,6 @@ void PairNSCD::settings(int narg, char **arg)
                    "smallest grain's bounding radius)", value, nscd_restart::kMaxReachFraction);
       reach_given = -1.0;
       reach_fraction = value;
-    } else {
-      error->all(FLERR, "Illegal pair_style nscd command: unknown keyword '{}' (expected "
-                 "activation, activation/fraction, reach or reach/fraction)", arg[iarg]);
     }
   }
 }

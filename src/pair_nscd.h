@@ -52,9 +52,6 @@ class PairNSCD : public Pair {
   // neighbour cutoff includes it, so every pair that close is in the list.
   double reach_distance() const { return reach; }
 
-  double friction(int itype, int jtype) const { return mu[itype][jtype]; }
-  double restitution(int itype, int jtype) const { return restitution_coeff[itype][jtype]; }
-
  protected:
   double activation_given = -1.0;    // from `activation D`; < 0: use the fraction
   double activation_fraction = 0.1;  // of the smallest bounding radius in the library

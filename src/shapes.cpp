@@ -2,6 +2,7 @@
    parses the deck and moves shapes onto atoms. */
 
 #include "shapes.h"
+#include "nscd_checks.h"
 #include "nscd_args.h"
 
 #include "atom.h"
@@ -287,11 +288,9 @@ void Shapes::assign(int narg, char **arg)
     return avec->shape[i];
   };
   if (density > 0.0) {    // a point has no volume: check on all ranks before changing anything
-    tagint first_point = MAXTAGINT, any_point;
-    for (int i = 0; i < atom->nlocal; i++)
-      if ((mask[i] & groupbit) && shape_of(i) == 0) first_point = std::min(first_point, tag[i]);
-    MPI_Allreduce(&first_point, &any_point, 1, MPI_LMP_TAGINT, MPI_MIN, world);
-    if (any_point != MAXTAGINT)
+    const tagint any_point =
+        nscd_checks::lowest_tag_where(lmp, [&](int i) { return (mask[i] & groupbit) && shape_of(i) == 0; });
+    if (any_point)
       error->all(FLERR, "shapes assign: atom ID {} is a point (shape 0) and has no volume; "
                  "give its 'mass' instead of a density", any_point);
   }

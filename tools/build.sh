@@ -14,6 +14,7 @@ jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 packages=(g++ cmake make xz-utils ca-certificates libopenmpi-dev openmpi-bin
           libeigen3-dev libqhull-dev libgtest-dev libbenchmark-dev ccache
           libfftw3-dev python3-numpy python3-scipy python3-matplotlib
+          python3-sphinx python3-myst-parser       # the docs test (doc/conf.py, ctest -L docs)
           paraview python3-paraview xvfb xauth)    # ParaView renders (doc/analysis.md): ~1 min, ~150 packages
 missing=()
 for p in "${packages[@]}"; do

@@ -223,6 +223,25 @@ TEST_F(BadInputTest, BadNumbersNameTheCommandAndKeyword)
   EXPECT_TRUE(has(error_of("shapes random 2.5 seed 1"), "shapes random: count 2.5 must be a whole number"));
 }
 
+// A misspelled keyword is named as such, before its value is read (before: pair_style nscd,
+// fix nscd/plate and compute nscd/column read the value first, and 'flor abc' was refused as
+// "flor 'abc' is not a number"); a keyword without a value says so.
+TEST_F(BadInputTest, UnknownKeywordsAreNamedBeforeTheirValues)
+{
+  box();
+  std::string message = error_of("pair_style nscd reech abc");
+  EXPECT_TRUE(has(message, "pair_style nscd: unknown keyword 'reech' (expected activation, activation/fraction, "
+                           "reach, reach/fraction)")) << message;
+  EXPECT_TRUE(has(error_of("pair_style nscd reach"), "pair_style nscd: keyword 'reach' needs a value"));
+  run("pair_style nscd");
+  message = error_of("fix p all nscd/plate 3 mass 1 lod abc");
+  EXPECT_TRUE(has(message, "fix nscd/plate: unknown keyword 'lod' (expected load, rate")) << message;
+  EXPECT_TRUE(has(error_of("fix p all nscd/plate 3 mass 1 load"), "fix nscd/plate: keyword 'load' needs a value"));
+  message = error_of("compute c all nscd/column 0 0 1 flor abc");
+  EXPECT_TRUE(has(message, "compute nscd/column: unknown keyword 'flor' (expected floor, percentile)")) << message;
+  EXPECT_TRUE(has(error_of("compute c all nscd/column 0 0 1 floor"), "compute nscd/column: keyword 'floor' needs a value"));
+}
+
 // Pushing overlapping grains apart faster than contacts are looked for ahead is refused,
 // naming the speed that fits (before: overlap_speed 1e6 ended in "Lost atoms").
 TEST_F(BadInputTest, OverlapSpeedBeyondTheLookAheadIsRefused)

@@ -1,0 +1,86 @@
+/* Checks that every style of the package makes the same way, written once: the lowest ID
+   of the atoms that break a rule (the same on every rank, so the error is raised on all
+   ranks alike and names one atom whatever the number of ranks), one instance of a fix, and
+   the refusal of a damaged restart block. For the .cpp files of this package (not style
+   headers: LAMMPS compiles those into its core). */
+
+#ifndef LMP_NSCD_CHECKS_H
+#define LMP_NSCD_CHECKS_H
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "lammps.h"
+#include "lmptype.h"
+#include "modify.h"
+
+#include "nscd_restart.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+
+namespace LAMMPS_NS {
+namespace nscd_checks {
+
+// The lowest of the ranks' `mine` (an atom ID, or MAXTAGINT for none). Collective.
+inline tagint lowest_tag_of_all(MPI_Comm world, tagint mine)
+{
+  tagint all = MAXTAGINT;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  return all;
+}
+
+// The lowest ID of the owned atoms i for which bad(i) holds, over all ranks; 0 if there is
+// none (atom IDs start at 1), so that `if (tagint id = lowest_tag_where(...)) error->all(...)`.
+// Collective: every rank must call it.
+template <class Bad> tagint lowest_tag_where(LAMMPS *lmp, Bad bad)
+{
+  Atom *atom = lmp->atom;
+  tagint mine = MAXTAGINT;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (bad(i)) mine = std::min(mine, atom->tag[i]);
+  const tagint all = lowest_tag_of_all(lmp->world, mine);
+  return all == MAXTAGINT ? 0 : all;
+}
+
+// Stops if another fix of the class Style than `fix` is defined; `why_one` says why one is
+// enough ("one solver handles all grains and boundaries").
+template <class Style> void refuse_second_instance(LAMMPS *lmp, const Fix *fix, const char *why_one)
+{
+  for (const Fix *other : lmp->modify->get_fix_list())
+    if (other != fix && dynamic_cast<const Style *>(other))
+      lmp->error->all(FLERR, "fix {}: only one fix {} may be defined ({} and {}); {}", fix->style, fix->style,
+                      other->id, fix->id, why_one);
+}
+
+// read(bytes, size) from nscd_restart_blocks.h on the block LAMMPS hands Fix::restart(), or
+// an error naming the fix, what is wrong with the block and `way_out` (how to start without
+// it) if it is damaged.
+template <class Read>
+auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *way_out)
+    -> decltype(read(bytes, nscd_restart::kUnknownSize))
+{
+  try {
+    return read(bytes, nscd_restart::kUnknownSize);
+  } catch (nscd_restart::Damaged &e) {
+    lmp->error->all(FLERR, "fix {} {}: its restart block cannot be used: {}. {}", fix->style, fix->id, e.what(),
+                    way_out);
+  }
+  return {};    // not reached: error->all does not return
+}
+
+// Warns (on rank 0) that the block holding `what` is in an older format whose length this
+// build cannot check; `not_read` says what is not read and what the run does without it.
+inline void warn_format_not_read(LAMMPS *lmp, const Fix *fix, const char *what, int format, const char *not_read)
+{
+  if (lmp->comm->me == 0)
+    lmp->error->warning(FLERR, "fix {} {}: the restart file holds {} in format {}, whose length this build cannot "
+                        "check{}", fix->style, fix->id, what, format, not_read);
+}
+
+}    // namespace nscd_checks
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""Every command page of doc/ (the pages of the first table of contents in doc/index.md,
+"Commands") has the sections of a LAMMPS reference page: Syntax, Examples, Description,
+Restart, Restrictions, Related commands, Default (as '## ' headings), in that order (other
+sections may stand between them). Prints what is missing or out of order and exits 1 if
+anything is.
+
+    check_layout.py DOC_DIR
+"""
+import pathlib
+import re
+import sys
+
+SECTIONS = ["Syntax", "Examples", "Description", "Restart", "Restrictions", "Related commands", "Default"]
+
+
+def command_pages(doc):
+    index = (doc / "index.md").read_text()
+    first = re.search(r"```\{toctree\}\n(.*?)```", index, re.S)
+    if not first:
+        sys.exit(f"{doc / 'index.md'}: no toctree")
+    return [line.strip() for line in first.group(1).splitlines()
+            if line.strip() and not line.strip().startswith(":")]
+
+
+def headings(page):
+    """The '## ' headings of a page, outside code blocks."""
+    found, fence = [], False
+    for line in page.read_text().splitlines():
+        if line.startswith("```"):
+            fence = not fence
+        elif not fence and line.startswith("## "):
+            found.append(line[3:].strip())
+    return found
+
+
+def layout_problems(page):
+    found = headings(page)
+    missing = [s for s in SECTIONS if s not in found]
+    if missing:
+        return "no section " + ", ".join(missing)
+    present = [h for h in found if h in SECTIONS]
+    if present != SECTIONS:
+        return "sections out of order: " + ", ".join(present)
+    return ""
+
+
+def main():
+    doc = pathlib.Path(sys.argv[1])
+    pages = command_pages(doc)
+    bad = 0
+    for name in pages:
+        problem = layout_problems(doc / f"{name}.md")
+        if problem:
+            bad += 1
+            print(f"doc/{name}.md: {problem}")
+    print(f"{len(pages)} command pages, {bad} not in the layout of a LAMMPS reference page")
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
