@@ -31,6 +31,7 @@
 #include "solver/problem_file.h"
 #include "solver/rigid_motion.h"
 #include "solver/warm_start.h"
+#include "math/capacity_bytes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -873,6 +874,18 @@ double FixNSCD::compute_vector(int n)
     case KE_ROTATION: return kinetic_rotational;
   }
   return 0.0;
+}
+
+/* The contact problem (bodies, contacts, rows), the warm-start impulses (stored, handed over
+   by other ranks, read from a restart file) and the per-atom virial LAMMPS allocated for
+   this fix: the bulk of a rank's memory in a dense pile (doc/scaling.md). */
+double FixNSCD::memory_usage()
+{
+  const std::size_t bytes = solver->problem.memory_bytes() + solver->warm_start.memory_bytes() +
+      solver->handed_over.memory_bytes() + nscd::capacity_bytes(solver->restored_contacts) +
+      nscd::capacity_bytes(boundary_counts) + nscd::capacity_bytes(global_bodies) +
+      nscd::capacity_bytes(global_body_fixes) + nscd::capacity_bytes(boundaries) + nscd::capacity_bytes(boundary_fixes);
+  return (double) bytes + (double) maxvatom * 6 * sizeof(double);
 }
 
 /* Communication: `state` sends v, omega, f, torque to ghosts before the solve; during it,

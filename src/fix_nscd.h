@@ -37,6 +37,7 @@ class FixNSCD : public Fix {
   void final_integrate() override;
   void post_run() override;
   double compute_vector(int) override;
+  double memory_usage() override;
 
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;

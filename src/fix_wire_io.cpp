@@ -6,6 +6,7 @@
 
 #include "fix_wire.h"
 #include "fix_wire_lib.h"
+#include "math/capacity_bytes.h"
 
 #include "atom.h"
 #include "atom_vec_spheropolyhedron.h"
@@ -191,14 +192,21 @@ void FixWire::hand_over_memories()
   lib->contacts->add_memories(arriving);
 }
 
-/* Per-atom Gear states, node arrays, the grain force buffer, about 256 bytes per candidate
-   contact pair. */
+/* The per-atom Gear states, the atom indices, the node arrays of the subcycle, the
+   topology, the grain force buffer and the contact model (candidates, records, memories),
+   at capacity. */
 double FixWire::memory_usage()
 {
+  using nscd::capacity_bytes;
   const wire::WireNodeSet &nodes = lib->step.nodes;
-  return (double) atom->nmax * kGearColumns * sizeof(double) + (double) nodes.positions.size() * 3 * sizeof(Vec3) +
-      (double) nodes.state.size() * sizeof(wire::Gear5State) + (double) grain_force_buffer.size() * sizeof(double) +
-      (lib->contacts ? (double) lib->contacts->candidates() * 256.0 : 0.0);
+  std::size_t bytes = capacity_bytes(node_of_atom) + capacity_bytes(atom_of_node) + capacity_bytes(atom_of_grain) +
+      capacity_bytes(elements) + capacity_bytes(grain_force_buffer) + capacity_bytes(nodes.state) +
+      capacity_bytes(nodes.mass) + capacity_bytes(nodes.fixed) + capacity_bytes(nodes.positions) +
+      capacity_bytes(nodes.velocities) + capacity_bytes(nodes.forces) + capacity_bytes(lib->step.external) +
+      capacity_bytes(lib->step_start) + capacity_bytes(lib->restored);
+  for (const auto &r : nodes.arrays.r) bytes += capacity_bytes(r);
+  if (lib->contacts) bytes += lib->contacts->memory_bytes();
+  return (double) atom->nmax * kGearColumns * sizeof(double) + (double) bytes;
 }
 
 /* Global restart: the step of the stored Gear states and the contact memories of all ranks

@@ -19,6 +19,7 @@
 #include "nscd_restart_blocks.h"
 
 #include "geometry/contact.h"
+#include "math/capacity_bytes.h"
 #include "shape/shape_library.h"
 #include "solver/contact_problem.h"
 
@@ -395,6 +396,17 @@ void PairNSCD::stop_if_damaged(std::string problem)
   MPI_Bcast(&problem[0], size, MPI_CHAR, 0, world);
   error->all(FLERR, "pair_style nscd: the restart file's settings cannot be used: {}. Write the restart "
              "again, or start from a data file", problem);
+}
+
+/* The contacts of the last compute() (at capacity) and the per type-pair laws, besides what
+   Pair counts itself (per-atom energy and virial). The geometry's scratch space is sized by
+   the largest pair of shapes, not by the atoms, and is left out. */
+double PairNSCD::memory_usage()
+{
+  const int n = atom->ntypes + 1;
+  double bytes = Pair::memory_usage() + (double) nscd::capacity_bytes(found->contacts);
+  if (allocated) bytes += 2.0 * n * n * sizeof(double) + (double) n * n * (sizeof(int) + sizeof(double));
+  return bytes;
 }
 
 void *PairNSCD::extract(const char *name, int &dim)

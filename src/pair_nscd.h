@@ -39,6 +39,7 @@ class PairNSCD : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
+  double memory_usage() override;
   // Cutoff of `neighbor multi` collections. Overrides Pair::radii2cut of LAMMPS up to
   // 29 Aug 2024 / 4 Feb 2025 (no `override`: LAMMPS 4 Jul 2026 dropped it and sums the two
   // radii itself, so there the activation distance must fit in the neighbour skin).

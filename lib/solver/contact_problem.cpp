@@ -1,5 +1,7 @@
 #include "solver/contact_problem.h"
 
+#include "math/capacity_bytes.h"
+
 #include <Eigen/Cholesky>
 
 #include <algorithm>
@@ -637,6 +639,13 @@ SolveReport solve(ContactProblem &problem, const SolverOptions &options)
 {
   problem.prepare(options);
   return iterate(problem, options);
+}
+
+std::size_t ContactProblem::memory_bytes() const
+{
+  return capacity_bytes(bodies) + capacity_bytes(contacts) + capacity_bytes(rows_) + capacity_bytes(group_) +
+      capacity_bytes(remembered_) + capacity_bytes(order_) + capacity_bytes(swept_) + capacity_bytes(synced_velocity_) +
+      capacity_bytes(synced_angular_velocity_);
 }
 
 }    // namespace nscd

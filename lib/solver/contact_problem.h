@@ -291,6 +291,10 @@ class ContactProblem {
   // Call once the velocities of all bodies (owned and ghost) agree across ranks.
   void mark_synchronised();
 
+  // Bytes this problem holds on the heap (bodies, contacts, the rows and the sweep's
+  // scratch), at capacity: what stays allocated between steps.
+  std::size_t memory_bytes() const;
+
  private:
   using Row = detail::ContactRow;
 

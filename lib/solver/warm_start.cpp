@@ -1,5 +1,7 @@
 #include "solver/warm_start.h"
 
+#include "math/capacity_bytes.h"
+
 #include <algorithm>
 #include <tuple>
 
@@ -120,6 +122,11 @@ long WarmStartCache::apply_to(std::vector<Contact> &contacts,
     ++found;
   }
   return found;
+}
+
+std::size_t WarmStartCache::memory_bytes() const
+{
+  return capacity_bytes(entries_);
 }
 
 }    // namespace nscd

@@ -50,6 +50,8 @@ class WarmStartCache {
   long apply_to(std::vector<Contact> &contacts, const std::vector<std::size_t> &which) const;
 
   std::size_t size() const { return entries_.size(); }
+  // Bytes held on the heap (the stored entries, at capacity).
+  std::size_t memory_bytes() const;
 
  private:
   struct Entry {

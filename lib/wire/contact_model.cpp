@@ -1,5 +1,7 @@
 #include "wire/contact_model.h"
 
+#include "math/capacity_bytes.h"
+
 #include "wire/contact_weights.h"
 
 #include <algorithm>
@@ -547,6 +549,18 @@ void ContactModel::add_memories(const std::vector<StoredContact> &stored)
 {
   carry_memories();
   for (const StoredContact &s : stored) carried_[s.key] = s.memory;
+}
+
+std::size_t ContactModel::memory_bytes() const
+{
+  return capacity_bytes(records_) + capacity_bytes(record_of_) + capacity_bytes(all_elements_) +
+      capacity_bytes(scene_.node_id) + capacity_bytes(scene_.node_boundaries) + capacity_bytes(scene_.elements) +
+      capacity_bytes(scene_.grains) + capacity_bytes(scene_.boundaries) + capacity_bytes(frames_) +
+      capacity_bytes(grain_features_) + capacity_bytes(grain_pairs_) + capacity_bytes(grain_watch_) +
+      capacity_bytes(grain_groups_) + capacity_bytes(wire_pairs_) + capacity_bytes(wire_watch_) +
+      capacity_bytes(wire_groups_) + capacity_bytes(boundary_pairs_) + capacity_bytes(carried_) +
+      capacity_bytes(built_at_) + capacity_bytes(moved_) + capacity_bytes(grains_built_at_) +
+      capacity_bytes(grains_last_step_) + capacity_bytes(centres_);
 }
 
 }    // namespace nscd::wire

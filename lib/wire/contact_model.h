@@ -198,6 +198,10 @@ class ContactModel {
   long long grain_evaluations() const { return grain_evaluations_; }
   long long grain_evaluations_from_hint() const { return grain_from_hint_; }
   std::size_t candidates() const { return grain_pairs_.size() + wire_pairs_.size() + boundary_pairs_.size(); }
+  // Bytes held on the heap: the candidate lists and their watches, the contact records and
+  // memories, the scene's copies and the per-node scratch, at capacity. The shapes' feature
+  // tables (per shape, not per atom) and the point grid's cells are left out.
+  std::size_t memory_bytes() const;
 
  private:
   // A pair found open at its last evaluation keeps where its nodes were then (`seen`) and

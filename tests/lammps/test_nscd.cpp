@@ -5,9 +5,12 @@
 #include "atom_vec_spheropolyhedron.h"
 #include "compute.h"
 #include "fix_nscd.h"
+#include "force.h"
+#include "info.h"
 #include "modify.h"
 #include "nscd_restart.h"
 #include "output.h"
+#include "pair_nscd.h"
 #include "thermo.h"
 
 #include "solver/contact_problem.h"
@@ -151,6 +154,14 @@ class NSCDTest : public LammpsTest {
         mine[6 + d] = avec->omega[i][d];
       }
     MPI_Allreduce(mine.data(), all.data(), 9, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    return all;
+  }
+
+  // How many ranks own at least one atom.
+  int ranks_owning_atoms()
+  {
+    int mine = lmp->atom->nlocal > 0, all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
     return all;
   }
 
@@ -979,4 +990,85 @@ TEST_F(NSCDTest, AcceleratedMethodsNeedFewerSweepsUnderAHeavyPlate)
                 sweeps["method gs"], sweeps["method nesterov"], sweeps["method nesterov coarse yes"]);
   EXPECT_LT(sweeps["method nesterov"], 0.5 * sweeps["method gs"]);
   EXPECT_LT(sweeps["method nesterov coarse yes"], 0.5 * sweeps["method gs"]);
+}
+
+// memory_usage(): fix nscd and pair nscd report at least the contact arrays they hold (each
+// contact of the problem with its solver row, each found contact), and LAMMPS' "Per MPI rank
+// memory allocation" (Info::get_memory_info, in MB) includes them. Fails with the Fix and Pair
+// defaults (0 and the per-atom tallies only).
+TEST_F(NSCDTest, MemoryUsageCountsTheContactArrays)
+{
+  scene();
+  for (int level = 0; level < 4; level++)    // a resting pyramid of 10 cubes: 4 points per face
+    for (int k = 0; k < 4 - level; k++) add_cube(-1.4 + 0.55 * level + 1.1 * k, 0.0, 0.5 + level);
+  commands({"shapes assign all shape 1 density 1", "run 50"});
+  auto *pair = dynamic_cast<PairNSCD *>(lmp->force->pair);
+  ASSERT_NE(pair, nullptr);
+  const double contacts = (double) solver()->contacts().size(), found = (double) pair->contacts().size();
+  const double fix_least = contacts * (sizeof(nscd::Contact) + sizeof(nscd::detail::ContactRow));
+  const double pair_least = found * sizeof(nscd::Contact);
+  const double fix_bytes = solver()->memory_usage(), pair_bytes = pair->memory_usage();
+  double total_mb[3];
+  Info(lmp).get_memory_info(total_mb);
+  std::printf("[ INFO     ] rank %d: %g contacts (%g grain pairs): fix nscd %g bytes (at least %g), pair nscd %g "
+              "(at least %g), all %g MB\n",
+              rank(), contacts, found, fix_bytes, fix_least, pair_bytes, pair_least, total_mb[0]);
+  double all_contacts = 0.0;
+  MPI_Allreduce(&contacts, &all_contacts, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_GE(all_contacts, 4 * 10);    // every cube rests on 4 points at least
+  EXPECT_GE(fix_bytes, fix_least);
+  EXPECT_GE(pair_bytes, pair_least);
+  EXPECT_GE(total_mb[0] * 1024 * 1024, fix_bytes + pair_bytes + lmp->atom->memory_usage());
+}
+
+// Load balance: the plate test above with comm_style tiled, a `balance rcb` before the run and
+// `fix balance rcb` during it (every 100 steps), so the four cubes, their contacts and their
+// warm starts move between ranks: the same forces to the same tolerances.
+TEST_F(NSCDTest, PlateOnCubesCarriesTheSameLoadUnderRcbBalance)
+{
+  scene();
+  for (double x : {-1.2, 1.2})
+    for (double y : {-1.2, 1.2}) add_cube(x, y, 0.5);
+  commands({"shapes assign all shape 1 density 1", "comm_style tiled", "balance 1.0 rcb",
+            "fix plate all nscd/plate 1.0 mass 2 rate 10 gravity 1 friction 0.5",
+            "fix lb all balance 100 1.0 rcb", "run 1000"});
+  EXPECT_EQ(ranks_owning_atoms(), std::min(ranks(), 4));    // rcb gave every rank a cube
+  const double load = 10.0 * 1.0;
+  EXPECT_NEAR(fix_value("plate", 3), load, 1e-9);
+  EXPECT_NEAR(fix_value("plate", 2), load + 2.0, 1e-3);
+  EXPECT_NEAR(fix_value("floor", 2), -(load + 2.0 + 4.0), 1e-3);
+  EXPECT_NEAR(fix_value("plate", 0), 1.0, 1e-7);
+  for (tagint k = 1; k <= 4; k++) {
+    const std::vector<double> s = state_of(k);
+    EXPECT_NEAR(s[2], 0.5, 1e-7);
+    for (int d = 3; d < 9; d++) EXPECT_NEAR(s[d], 0.0, 1e-6);
+  }
+  EXPECT_EQ(lmp->atom->natoms, 4);
+}
+
+// A resting pyramid (10 cubes across x = 0) balanced in the middle of the rest, first with
+// `balance shift` on the brick decomposition, then with rcb under comm_style tiled: each
+// hands grains with their contacts to other ranks, and the pyramid stays where it rested
+// (to the solver's 1e-9 tolerance, 1e-7 in position) with its warm start (a few sweeps).
+TEST_F(NSCDTest, RestingPyramidStaysPutThroughShiftAndRcbBalance)
+{
+  scene(0.5, "tolerance 1e-9 max_sweeps 5000 check 1");
+  for (int level = 0; level < 4; level++)
+    for (int k = 0; k < 4 - level; k++) add_cube(-1.4 + 0.55 * level + 1.1 * k, 0.0, 0.5 + level);
+  commands({"shapes assign all shape 1 density 1", "run 300"});
+  std::vector<std::vector<double>> rested;
+  for (tagint k = 1; k <= 10; k++) rested.push_back(state_of(k));
+  const double resting = fix_value("solver", 0);
+  commands({"balance 1.0 shift x 10 1.0", "run 100", "comm_style tiled", "balance 1.0 rcb",
+            "fix lb all balance 20 1.0 rcb", "run 100"});
+  const double after = fix_value("solver", 0);
+  EXPECT_EQ(ranks_owning_atoms(), ranks());    // rcb split the 10 cubes between the ranks
+  for (tagint k = 1; k <= 10; k++) {
+    const std::vector<double> s = state_of(k);
+    for (int d = 0; d < 3; d++) EXPECT_NEAR(s[d], rested[k - 1][d], 1e-7) << "cube " << k;
+    for (int d = 3; d < 9; d++) EXPECT_NEAR(s[d], 0.0, 1e-6) << "cube " << k;
+  }
+  if (rank() == 0) std::printf("[ INFO     ] %d ranks: sweeps resting %g, after balancing %g\n", ranks(), resting, after);
+  EXPECT_LE(after, resting + 2);
+  EXPECT_EQ(lmp->atom->natoms, 10);
 }

@@ -1078,6 +1078,36 @@ TEST_F(WireBoundPyramidTest, LoopHoldsThePyramidAtItsClosedFormHeightOnAnyRankCo
   EXPECT_LT(kinetic_energy(1, MAXTAGINT), 1e-10);
 }
 
+// The same pyramid with comm_style tiled and `fix balance rcb` every 100 steps (grains,
+// loop nodes, their contacts and friction histories change rank during the run): the same
+// closed-form forces and height to the same tolerances.
+TEST_F(WireBoundPyramidTest, LoopHoldsThePyramidUnderRcbBalance)
+{
+  commands({"comm_style tiled"});
+  pyramid(true);
+  commands({"balance 1.0 rcb", "fix lb all balance 100 1.0 rcb", "run 1000"});
+  const int samples = 50;
+  double floor_z = 0.0, on_grains = 0.0;
+  for (int k = 0; k < samples; k++) {
+    run("run 10");
+    floor_z += fix_value("floor", 2) / samples;
+    on_grains += fix_value("w", 9) / samples;
+  }
+  const double wire = kLoopNodes * kNodeMass, total = 14 * kBall + wire;
+  const double height = 0.5 + 2.0 * std::sqrt(0.5), top = top_height();    // collective
+  const int holding = ranks_holding_the_loop();
+  if (rank() == 0)
+    std::printf("[ wire-bound pyramid, rcb, %d ranks, loop on %d ] floor %.10g (weight %.10g), top %.10g "
+                "(closed form %.10g)\n",
+                ranks(), holding, floor_z, total, top, height);
+  EXPECT_EQ(lmp->atom->natoms, kLoopNodes + 14);
+  EXPECT_EQ(holding, ranks());    // rcb cuts the loop too
+  EXPECT_NEAR(floor_z / -total, 1.0, 1e-6);
+  EXPECT_NEAR(on_grains / -wire, 1.0, 1e-6);
+  EXPECT_NEAR(top, height, 1e-6);
+  EXPECT_LT(kinetic_energy(1, MAXTAGINT), 1e-10);
+}
+
 TEST_F(WireBoundPyramidTest, WithoutTheLoopTheBaseSlidesApart)
 {
   // the control: the same pyramid without its wire collapses on the frictionless floor
