@@ -148,13 +148,14 @@ def _principal_field(r, z, blocks, r_edges, z_edges):
     return rows, segments
 
 
-def _draw_field(fig, ax, args, segments, r_edges, z_edges, title, what="largest direction"):
+def _draw_field(fig, ax, args, segments, r_edges, z_edges, title, what="largest direction", limit=None):
     """Bars along the principal directions of each bin (length: the principal value; the
-    largest coloured by its signed angle)."""
+    largest coloured by its signed angle, on -limit..limit: default the largest |angle|)."""
     from matplotlib.collections import LineCollection
     cell = min(np.diff(r_edges).min(), np.diff(z_edges).min())
     scale = 0.9 * cell / max([abs(s[2]) for s in segments] + [1e-300])
-    limit = max([abs(s[6]) for s in segments] + [1e-3])
+    if limit is None:
+        limit = _angle_limit(segments)
 
     def bars(length_of, direction_of):
         return [[(x - 0.5 * scale * length_of(s) * direction_of(s)[0], y - 0.5 * scale * length_of(s) * direction_of(s)[1]),
@@ -173,6 +174,10 @@ def _draw_field(fig, ax, args, segments, r_edges, z_edges, title, what="largest 
     _r_axis(ax, args, scaled=False)
     ax.set_ylabel("z")
     ax.set_title(title, fontsize=9)
+
+
+def _angle_limit(segments):
+    return max([abs(s[6]) for s in segments] + [1e-3])
 
 
 FIELD_HEADER = ["r", "z", "grains", "F_rr", "F_rz", "F_zz", "lambda_max", "vmax_r", "vmax_z", "lambda_min",
@@ -269,13 +274,16 @@ def cmd_stress_field(args):
     z_edges = _z_edges(args, np.concatenate([p[2] for p in panels]))
     plt = _pyplot()
     fig, axes = plt.subplots(1, len(panels), figsize=(5.0 * len(panels), 6.0), squeeze=False)
-    rows = []
-    for (what, pr, pz, pblocks, psnap), ax in zip(panels, axes[0]):
+    rows, fields = [], []
+    for what, pr, pz, pblocks, psnap in panels:
         field_rows, segments = _principal_field(pr, pz, pblocks, r_edges, z_edges)
         rows += [(what,) + row for row in field_rows]
+        fields.append((what, len(pr), psnap, segments))
+    limit = max(_angle_limit(segments) for _, _, _, segments in fields)    # one colour scale for both
+    for (what, grains, psnap, segments), ax in zip(fields, axes[0]):
         major = "major (most compressive) stress" if what == "stress" else "largest fabric direction"
         _draw_field(fig, ax, args, segments, r_edges, z_edges,
-                    f"{what} in the r-z plane ({len(pr)} grains, {psnap} snapshot(s))", major)
+                    f"{what} in the r-z plane ({grains} grains, {psnap} snapshot(s))", major, limit)
     fig.tight_layout()
     print(_save(fig, args.out), _write_csv(args.out, ["field"] + FIELD_HEADER, rows, [
         "per (r, z) bin the mean r-z block in the grains' cylindrical frames: stress rows hold -sigma "
