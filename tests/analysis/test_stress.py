@@ -10,7 +10,7 @@ import unittest
 import numpy as np
 
 import synthetic
-from nscd_analysis import cli, cylinder, dumps, stress
+from nscd_analysis import cli, cylinder, dumps, stress, wire_breaks
 
 HEADER = ["id", "x", "y", "z"] + synthetic.indexed("sig", 6) + synthetic.indexed("crush", 4)
 
@@ -180,6 +180,43 @@ class Fields(unittest.TestCase):
         self.assertFalse(flags[0])
         with self.assertRaises(dumps.DumpError):
             stress.stress_components(snap, "other")
+
+
+class WireBreaks(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def write(self, name, text):
+        path = os.path.join(self.dir.name, name)
+        with open(path, "w") as f:
+            f.write(text)
+        return path
+
+    def test_breaks_in_cylindrical_coordinates(self):
+        # midpoints at known (r, z) around the axis (1, -1)
+        path = self.write("b.txt", "# step node_id_1 node_id_2 tension x y z   (fix wire w: broken elements)\n"
+                                   "1200 17 18 0.61 4 -1 2.5\n1210 40 41 0.58 1 1.5 0.75\n")
+        b = wire_breaks.read_breaks(path)
+        r, z = wire_breaks.positions_rz(b, (1.0, -1.0))
+        np.testing.assert_allclose(r, [3.0, 2.5])
+        np.testing.assert_allclose(z, [2.5, 0.75])
+        empty = self.write("none.txt", "# step node_id_1 node_id_2 tension x y z\n")
+        out = os.path.join(self.dir.name, "breaks")
+        self.assertEqual(cli.main(["wire-breaks", "--run", f"a={path}", "--run", f"b={empty}", "--axis", "1", "-1",
+                                   "--R", "3", "-o", out]), 0)
+        table = synthetic.read_csv(out + ".csv")
+        self.assertEqual(len(table), 2)
+        self.assertAlmostEqual(table[0]["r"], 3.0, places=9)
+        self.assertEqual(table[1]["id1"], 40)
+
+    def test_a_damaged_line_is_refused(self):
+        path = self.write("bad.txt", "1200 17 18 0.61 4 -1\n")
+        with self.assertRaises(wire_breaks.BreaksError):
+            wire_breaks.read_breaks(path)
+        self.assertEqual(cli.main(["wire-breaks", "--run", f"a={path}", "-o", os.path.join(self.dir.name, "x")]), 1)
 
 
 if __name__ == "__main__":

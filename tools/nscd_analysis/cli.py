@@ -8,7 +8,7 @@ import sys
 
 import numpy as np
 
-from . import cylinder, fabric, forces, logs, phases, stress, vtk, wire_contacts, wire_loops
+from . import cylinder, fabric, forces, logs, phases, stress, vtk, wire_breaks, wire_contacts, wire_loops
 from .dumps import DumpError, read_dumps
 from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
 
@@ -387,6 +387,35 @@ def cmd_crush_profile(args):
         print(line)
 
 
+# --- wire-breaks: where fix wire's elements broke ---------------------------------------
+
+def cmd_wire_breaks(args):
+    runs = _parse_runs(args.run)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(5.0, 5.0))
+    rows, summary = [], []
+    for label, paths in runs:
+        for path in paths:
+            b = wire_breaks.read_breaks(path)
+            r, z = wire_breaks.positions_rz(b, args.axis)
+            ax.scatter(r / _r_scale(args), z, s=14, label=f"{label} ({len(b)})")
+            rows += [(label, int(row[0]), int(row[1]), int(row[2]), row[3], ri, zi) for row, ri, zi in zip(b, r, z)]
+            summary.append(f"{label}: {len(b)} breaks" + (f", z {np.min(z):.3g}..{np.max(z):.3g} (median {np.median(z):.3g}), "
+                                                          f"r {np.min(r):.3g}..{np.max(r):.3g} (median {np.median(r):.3g}), "
+                                                          f"steps {int(b[:, 0].min())}..{int(b[:, 0].max())}" if len(b) else ""))
+    _r_axis(ax, args, scaled=True)
+    ax.set_ylabel("z")
+    if args.zmax is not None:
+        ax.set_ylim(0.0, args.zmax)
+    ax.set_xlim(0.0, None)
+    ax.set_title("where the wire broke (element midpoints)", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["run", "step", "id1", "id2", "tension", "r", "z"], rows, summary))
+    for line in summary:
+        print(line)
+
+
 # --- force-profile: the papers' Fig. 5 --------------------------------------------------
 
 def cmd_force_profile(args):
@@ -696,6 +725,15 @@ def parser():
     _common(p)
     p.set_defaults(func=cmd_crush_profile)
 
+    p = sub.add_parser("wire-breaks", help="where the wire broke: fix wire's breaks files in (r, z)")
+    p.add_argument("--run", action="append", required=True, help="LABEL=FILE[,FILE...] (breaks files); repeat per run")
+    p.add_argument("--axis", type=float, nargs=2, default=(0.0, 0.0), metavar=("X", "Y"),
+                   help="vertical column axis through (X, Y) (default 0 0)")
+    p.add_argument("--R", type=float, help="the column's radius: r drawn in units of R")
+    p.add_argument("--zmax", type=float, help="top of the z axis")
+    p.add_argument("--out", "-o", required=True, help="output prefix: PREFIX.png and PREFIX.csv")
+    p.set_defaults(func=cmd_wire_breaks)
+
     p = sub.add_parser("force-profile", help="Fig. 5: mean normal force between grains vs r")
     p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
     p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. the plate loads)")
@@ -776,7 +814,7 @@ def main(argv=None):
     args = parser().parse_args(argv)
     try:
         args.func(args)
-    except (DumpError, logs.LogError, ValueError, OSError) as e:
+    except (DumpError, logs.LogError, wire_breaks.BreaksError, ValueError, OSError) as e:
         print(f"nscd-analysis {args.command}: {e}", file=sys.stderr)
         return 1
     return 0
