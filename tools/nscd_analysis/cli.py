@@ -343,7 +343,7 @@ def cmd_stress_profile(args):
         for b in range(len(rc)):
             rows.append((label, s.timestep, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b]))
     _r_axis(ax, args, scaled=True)
-    ax.set_ylabel("vertical compressive stress  -sigma_zz (mean over grains)")
+    ax.set_ylabel("-sigma_zz, mean over grains (compression > 0)")
     ax.legend()
     fig.tight_layout()
     print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "grains", "mean_szz",
