@@ -160,6 +160,19 @@ class Fields(unittest.TestCase):
         self.assertEqual(by_z[1]["fraction"], 0.0)
         self.assertEqual(by_r[0]["grains"] + by_r[1]["grains"], 4000)
 
+    def test_labels_follow_the_files_of_several_runs(self):
+        # a later step first: labels go with the files as given, not with the steps' order
+        pos = np.array([[1.0, 0.0, 1.0], [2.0, 0.0, 1.0]])
+        crush = np.array([[0, 0, 0, 2.0], [0, 0, 0, 2.0]])
+        late = self.write("late.dump", pos, [uniaxial(0.0, 0.0)] * 2, crush, step=900)
+        early = self.write("early.dump", pos, [uniaxial(0.0, 0.0)] * 2, np.zeros((2, 4)), step=100)
+        out = os.path.join(self.dir.name, "order")
+        self.assertEqual(cli.main(["crush-profile", late, early, "--labels", "late", "early", "--axis", "0", "0",
+                                   "--rbins", "1", "--rmax", "3", "--zbins", "1", "-o", out]), 0)
+        by_label = {row["label"]: row for row in synthetic.read_csv(out + ".csv") if row["along"] == "r"}
+        self.assertEqual(by_label["late"]["fraction"], 1.0)
+        self.assertEqual(by_label["early"]["fraction"], 0.0)
+
     def test_fraction_profile_counts_and_binomial_error(self):
         count, fraction, error = stress.fraction_profile([1, 0, 0, 1, 1, 1], [0.5, 0.5, 0.5, 0.5, 1.5, 1.5],
                                                          np.array([0.0, 1.0, 2.0, 3.0]))

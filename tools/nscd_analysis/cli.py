@@ -321,7 +321,13 @@ def cmd_stress_angle(args):
 
 
 def _labelled_snapshots(args):
-    snaps = read_dumps(args.dump, args.steps, args.last)
+    """The snapshots and their labels. Without --steps the files (patterns) keep the order
+    given, each one's snapshots in timestep order (--last: the last of each), so that labels
+    follow the files when several runs are compared; with --steps, those steps in that order."""
+    if args.steps is None:
+        snaps = [s for pattern in args.dump for s in read_dumps([pattern], None, args.last)]
+    else:
+        snaps = read_dumps(args.dump, args.steps, args.last)
     labels = args.labels or [f"step {s.timestep}" for s in snaps]
     if len(labels) != len(snaps):
         raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
