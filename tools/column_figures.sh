@@ -22,16 +22,21 @@
 #                                 before the load phase starts, and the last dump)
 #   --phase-column C (v_phase)  --load-phase N (5)  --load-column C (v_plate_load)
 #   --series X:Y[,Y2]             time-series panels (repeat; default: the column preset)
+#   --crush-value V --crush-threshold X   crush_column: the fraction of grains with column V
+#                                 of compute nscd/crush/atom (index, sigma, fmax) >= X (default index 1)
 # Writes OUT_DIR/fig2_*.png (ParaView), fig3_column.png, fig3_silo.png, fig4.png,
-# fig5_column.png, fig5_silo.png, fig6.png, series_column.png, series_silo.png, each with its
-# CSV. A figure whose inputs are missing (a dump set, a thermo column, pvbatch) is skipped
-# with a warning naming what is missing; the others are still made. Ends with the lists of
-# figures made and skipped; exits 1 only when none was made.
+# fig5_column.png, fig5_silo.png, fig6.png, series_column.png, series_silo.png and, from
+# PREFIX.stress.<step>.dump (c_sig[*] c_crush[*]), stress_field_column.png (stress and fabric
+# side by side, under load), stress_angle.png, stress_profile_column.png and
+# crush_column.png, each with its CSV. A figure whose inputs are missing (a dump set, a
+# thermo column, pvbatch) is skipped with a warning naming what is missing; the others are
+# still made. Ends with the lists of figures made and skipped; exits 1 only when none was made.
 set -uo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-usage() { sed -n 2,31p "${BASH_SOURCE[0]}"; exit 2; }
+usage() { sed -n '2,/^set -uo/p' "${BASH_SOURCE[0]}" | sed '$d'; exit 2; }
 
 col="" silo="" col_prefix=column silo_prefix=silo col_logs=() silo_logs=() range=() r_opts=()
+crush_value=index crush_threshold=1
 rest="" loaded="" phase_column=v_phase load_phase=5 load_column=v_plate_load series=() axis=() R="" floor=()
 positional=()
 while [ $# -gt 0 ]; do
@@ -52,6 +57,8 @@ while [ $# -gt 0 ]; do
     --load-phase) load_phase=$2; shift 2 ;;
     --load-column) load_column=$2; shift 2 ;;
     --series) series+=(--plot "$2"); shift 2 ;;
+    --crush-value) crush_value=$2; shift 2 ;;
+    --crush-threshold) crush_threshold=$2; shift 2 ;;
     -h|--help) usage ;;
     -*) echo "column_figures: unknown option $1" >&2; usage ;;
     *) positional+=("$1"); shift ;;
@@ -202,6 +209,36 @@ elif [ -f "$col/$col_prefix.wcontacts.$rest.dump" ] && [ -f "$col/$col_prefix.wc
     "${axis[@]}" --labels "${labels[@]}" -o "$out/fig6"
 else
   skip fig6 "no $col_prefix.wcontacts.$rest.dump and $col_prefix.wcontacts.$loaded.dump in $col (compute wire/contacts)"
+fi
+
+# --- stress and crushing (PREFIX.stress.<step>.dump: in.column -var fields yes) ----------
+mapfile -t stress_steps < <(steps_of "$col" "$col_prefix.stress")
+stress_at() { [ -f "$col/$col_prefix.stress.$1.dump" ]; }
+if [ ${#stress_steps[@]} -eq 0 ] || [ -z "$rest" ]; then
+  skip "stress_*, crush_column" "no $col_prefix.stress.*.dump in $col (dump custom ... c_sig[*] c_crush[*]: in.column -var fields yes)"
+else
+  s_rest=$rest s_loaded=$loaded
+  stress_at "$s_rest" || s_rest=${stress_steps[0]}
+  stress_at "$s_loaded" || s_loaded=${stress_steps[$(( ${#stress_steps[@]} - 1 ))]}
+  fabric_beside=()
+  [ -f "$col/$col_prefix.fabric.$s_loaded.dump" ] && fabric_beside=(--fabric "$col/$col_prefix.fabric.$s_loaded.dump")
+  figure stress_field_column analysis stress-field "$col/$col_prefix.stress.$s_loaded.dump" "${fabric_beside[@]}" \
+    "${opts[@]}" -o "$out/stress_field_column"
+  runs=(--run "column=$col/$col_prefix.stress.$s_rest.dump")
+  [ "$s_loaded" != "$s_rest" ] && runs+=(--run "column loaded=$col/$col_prefix.stress.$s_loaded.dump")
+  [ -n "$silo_last" ] && [ -f "$silo/$silo_prefix.stress.$silo_last.dump" ] &&
+    runs+=(--run "silo=$silo/$silo_prefix.stress.$silo_last.dump")
+  figure stress_angle analysis stress-angle "${runs[@]}" "${opts[@]}" -o "$out/stress_angle"
+  mapfile -t labels < <(load_labels "${col_logs[@]}" -- "$s_rest" "$s_loaded")
+  if [ "$s_loaded" != "$s_rest" ]; then
+    figure stress_profile_column analysis stress-profile "$col/$col_prefix.stress.$s_rest.dump" \
+      "$col/$col_prefix.stress.$s_loaded.dump" --labels "${labels[@]}" "${opts[@]}" -o "$out/stress_profile_column"
+  else
+    figure stress_profile_column analysis stress-profile "$col/$col_prefix.stress.$s_rest.dump" --labels "${labels[0]}" \
+      "${opts[@]}" -o "$out/stress_profile_column"
+  fi
+  figure crush_column analysis crush-profile "$col/$col_prefix.stress.$s_loaded.dump" --labels "${labels[-1]}" \
+    --value "$crush_value" --threshold "$crush_threshold" "${opts[@]}" -o "$out/crush_column"
 fi
 
 # --- time series: panels whose columns the log lacks are left out by the tool ------------

@@ -8,7 +8,7 @@ import sys
 
 import numpy as np
 
-from . import cylinder, fabric, forces, logs, phases, vtk, wire_contacts, wire_loops
+from . import cylinder, fabric, forces, logs, phases, stress, vtk, wire_breaks, wire_contacts, wire_loops
 from .dumps import DumpError, read_dumps
 from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
 
@@ -129,10 +129,9 @@ def _pooled_fabric(args, patterns, steps, last):
             np.concatenate(angle_all), len(snaps))
 
 
-def cmd_fabric_field(args):
-    r, z, blocks, _, nsnap = _pooled_fabric(args, args.dump, args.steps, args.last)
-    r_edges = _r_edges(args, r)
-    z_edges = _z_edges(args, z)
+def _principal_field(r, z, blocks, r_edges, z_edges):
+    """Per non-empty (r, z) bin: the mean r-z block, its principal values and directions and
+    the signed angle of the largest (rows for the CSV, segments for _draw_field)."""
     count, mean = cylinder.binned_mean_2d(blocks.reshape(len(blocks), 4), r, z, r_edges, z_edges)
     rc, zc = cylinder.centres(r_edges), cylinder.centres(z_edges)
     rows, segments = [], []
@@ -146,31 +145,56 @@ def cmd_fabric_field(args):
             rows.append((rc[i], zc[j], count[i, j], block[0, 0], block[0, 1], block[1, 1], lam_max[0],
                          v_max[0, 0], v_max[0, 1], lam_min[0], v_min[0, 0], v_min[0, 1], angle))
             segments.append((rc[i], zc[j], lam_max[0], v_max[0], lam_min[0], v_min[0], angle))
-    plt = _pyplot()
+    return rows, segments
+
+
+def _draw_field(fig, ax, args, segments, r_edges, z_edges, title, what="largest direction", limit=None):
+    """Bars along the principal directions of each bin (length: the principal value; the
+    largest coloured by its signed angle, on -limit..limit: default the largest |angle|)."""
     from matplotlib.collections import LineCollection
-    fig, ax = plt.subplots(figsize=(5.0, 6.0))
     cell = min(np.diff(r_edges).min(), np.diff(z_edges).min())
-    scale = 0.9 * cell / max([s[2] for s in segments] + [1e-300])
-    limit = max([abs(s[6]) for s in segments] + [1e-3])
-    big = [[(x - 0.5 * scale * l * v[0], y - 0.5 * scale * l * v[1]), (x + 0.5 * scale * l * v[0], y + 0.5 * scale * l * v[1])]
-           for x, y, l, v, _, _, _ in segments]
-    small = [[(x - 0.5 * scale * l * v[0], y - 0.5 * scale * l * v[1]), (x + 0.5 * scale * l * v[0], y + 0.5 * scale * l * v[1])]
-             for x, y, _, _, l, v, _ in segments]
+    scale = 0.9 * cell / max([abs(s[2]) for s in segments] + [1e-300])
+    if limit is None:
+        limit = _angle_limit(segments)
+
+    def bars(length_of, direction_of):
+        return [[(x - 0.5 * scale * length_of(s) * direction_of(s)[0], y - 0.5 * scale * length_of(s) * direction_of(s)[1]),
+                 (x + 0.5 * scale * length_of(s) * direction_of(s)[0], y + 0.5 * scale * length_of(s) * direction_of(s)[1])]
+                for s in segments for x, y in [s[:2]]]
+    big = bars(lambda s: abs(s[2]), lambda s: s[3])
+    small = bars(lambda s: abs(s[4]), lambda s: s[5])
     ax.add_collection(LineCollection(small, colors="0.35", linewidths=0.8))
     lc = LineCollection(big, array=np.array([s[6] for s in segments]), cmap="coolwarm", linewidths=3.0)
     lc.set_clim(-limit, limit)
     ax.add_collection(lc)
-    fig.colorbar(lc, ax=ax, label="signed angle of the largest direction with z (rad)")
+    fig.colorbar(lc, ax=ax, label=f"signed angle of the {what} with z (rad)")
     ax.set_xlim(r_edges[0], r_edges[-1])
     ax.set_ylim(z_edges[0], z_edges[-1])
     ax.set_aspect("equal")
     _r_axis(ax, args, scaled=False)
     ax.set_ylabel("z")
-    ax.set_title(f"fabric in the r-z plane ({len(r)} grains, {nsnap} snapshot(s))", fontsize=9)
+    ax.set_title(title, fontsize=9)
+
+
+def _angle_limit(segments):
+    return max([abs(s[6]) for s in segments] + [1e-3])
+
+
+FIELD_HEADER = ["r", "z", "grains", "F_rr", "F_rz", "F_zz", "lambda_max", "vmax_r", "vmax_z", "lambda_min",
+                "vmin_r", "vmin_z", "angle_rad"]
+
+
+def cmd_fabric_field(args):
+    r, z, blocks, _, nsnap = _pooled_fabric(args, args.dump, args.steps, args.last)
+    r_edges = _r_edges(args, r)
+    z_edges = _z_edges(args, z)
+    rows, segments = _principal_field(r, z, blocks, r_edges, z_edges)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(5.0, 6.0))
+    _draw_field(fig, ax, args, segments, r_edges, z_edges,
+                f"fabric in the r-z plane ({len(r)} grains, {nsnap} snapshot(s))")
     fig.tight_layout()
-    header = ["r", "z", "grains", "F_rr", "F_rz", "F_zz", "lambda_max", "vmax_r", "vmax_z", "lambda_min",
-              "vmin_r", "vmin_z", "angle_rad"]
-    print(_save(fig, args.out), _write_csv(args.out, header, rows, [
+    print(_save(fig, args.out), _write_csv(args.out, FIELD_HEADER, rows, [
         "mean r-z block of the grains' fabric tensors in their cylindrical frame per (r, z) bin;",
         "angle: of the largest principal direction with z, positive = leaning outward going up (inward going down)"]))
 
@@ -224,6 +248,176 @@ def cmd_fabric_angle(args):
     fig.tight_layout()
     print(_save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "mean_angle_rad",
                                                        "sem_rad", "tensor_angle_rad"], rows, summary))
+    for line in summary:
+        print(line)
+
+
+# --- stress fields: stress-field, stress-angle, stress-profile, crush-profile ------------
+
+def _pooled_stress(args, patterns, steps, last):
+    r_all, z_all, blocks_all, angle_all = [], [], [], []
+    snaps = read_dumps(patterns, steps, last)
+    for s in snaps:
+        r, z, blocks, angle = stress.per_grain(s, _grain_axis(args, s), _zrange(args), args.stress_id)
+        r_all.append(r), z_all.append(z), blocks_all.append(blocks), angle_all.append(angle)
+    return (np.concatenate(r_all), np.concatenate(z_all), np.concatenate(blocks_all),
+            np.concatenate(angle_all), len(snaps))
+
+
+def cmd_stress_field(args):
+    r, z, blocks, _, nsnap = _pooled_stress(args, args.dump, args.steps, args.last)
+    panels = [("stress", r, z, blocks, nsnap)]
+    if args.fabric:
+        fr, fz, fblocks, _, fsnap = _pooled_fabric(args, args.fabric, args.steps, args.last)
+        panels.append(("fabric", fr, fz, fblocks, fsnap))
+    r_edges = _r_edges(args, np.concatenate([p[1] for p in panels]))
+    z_edges = _z_edges(args, np.concatenate([p[2] for p in panels]))
+    plt = _pyplot()
+    fig, axes = plt.subplots(1, len(panels), figsize=(5.0 * len(panels), 6.0), squeeze=False)
+    rows, fields = [], []
+    for what, pr, pz, pblocks, psnap in panels:
+        field_rows, segments = _principal_field(pr, pz, pblocks, r_edges, z_edges)
+        rows += [(what,) + row for row in field_rows]
+        fields.append((what, len(pr), psnap, segments))
+    limit = max(_angle_limit(segments) for _, _, _, segments in fields)    # one colour scale for both
+    for (what, grains, psnap, segments), ax in zip(fields, axes[0]):
+        major = "major (most compressive) stress" if what == "stress" else "largest fabric direction"
+        _draw_field(fig, ax, args, segments, r_edges, z_edges,
+                    f"{what} in the r-z plane ({grains} grains, {psnap} snapshot(s))", major, limit)
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["field"] + FIELD_HEADER, rows, [
+        "per (r, z) bin the mean r-z block in the grains' cylindrical frames: stress rows hold -sigma "
+        "(compression positive, compute nscd/stress/atom), fabric rows the fabric tensor;",
+        "angle: of the largest principal direction (stress: the most compressive) with z, positive = "
+        "leaning outward going up"]))
+
+
+def cmd_stress_angle(args):
+    runs = [(label, _pooled_stress(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
+    r_edges = _r_edges(args, np.concatenate([data[0] for _, data in runs]))
+    rc = cylinder.centres(r_edges)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    rows, summary = [], []
+    for label, (r, _, blocks, angle, nsnap) in runs:
+        count, mean, sem, tensor_angle = angle_profile(r, blocks, angle, r_edges)
+        value = tensor_angle if args.method == "tensor" else mean
+        ax.errorbar(rc / _r_scale(args), value, yerr=None if args.method == "tensor" else sem, marker="o", ms=4,
+                    capsize=2, label=label)
+        for b in range(len(rc)):
+            rows.append((label, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b], tensor_angle[b]))
+        summary.append(f"{label}: mean angle of the major principal stress over all grains {np.nanmean(angle):+.4f} rad "
+                       f"({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    _r_axis(ax, args, scaled=True)
+    ax.set_ylabel("signed angle of the major principal stress (rad)")
+    ax.set_title("mean over grains" if args.method == "grains" else "angle of the mean tensor", fontsize=9)
+    ax.legend()
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "mean_angle_rad",
+                                                       "sem_rad", "tensor_angle_rad"], rows, summary))
+    for line in summary:
+        print(line)
+
+
+def _labelled_snapshots(args):
+    """The snapshots and their labels. Without --steps the files (patterns) keep the order
+    given, each one's snapshots in timestep order (--last: the last of each), so that labels
+    follow the files when several runs are compared; with --steps, those steps in that order."""
+    if args.steps is None:
+        snaps = [s for pattern in args.dump for s in read_dumps([pattern], None, args.last)]
+    else:
+        snaps = read_dumps(args.dump, args.steps, args.last)
+    labels = args.labels or [f"step {s.timestep}" for s in snaps]
+    if len(labels) != len(snaps):
+        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+    return snaps, labels
+
+
+def cmd_stress_profile(args):
+    snaps, labels = _labelled_snapshots(args)
+    axes_of = [_grain_axis(args, s) for s in snaps]
+    r_edges = _r_edges(args, np.concatenate([cylinder.Cylindrical(stress.positions(s), a).r
+                                             for s, a in zip(snaps, axes_of)]))
+    rc = cylinder.centres(r_edges)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    rows = []
+    for s, axis, label in zip(snaps, axes_of, labels):
+        count, mean, sem = stress.szz_profile(s, axis, r_edges, _zrange(args), args.stress_id)
+        ax.errorbar(rc / _r_scale(args), -mean, yerr=sem, marker="o", ms=4, capsize=2, label=label)
+        for b in range(len(rc)):
+            rows.append((label, s.timestep, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b]))
+    _r_axis(ax, args, scaled=True)
+    ax.set_ylabel("-sigma_zz, mean over grains (compression > 0)")
+    ax.legend()
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "grains", "mean_szz",
+                                                       "sem_szz"], rows,
+                                           ["sigma_zz of compute nscd/stress/atom (tension positive) over grains "
+                                            "with contacts"]))
+
+
+def cmd_crush_profile(args):
+    snaps, labels = _labelled_snapshots(args)
+    data = []
+    for s in snaps:
+        pos, flags = stress.crushed(s, args.threshold, args.value, _zrange(args), args.crush_id)
+        data.append((s, cylinder.Cylindrical(pos, _grain_axis(args, s)), flags))
+    r_edges = _r_edges(args, np.concatenate([c.r for _, c, _ in data]))
+    z_edges = _z_edges(args, np.concatenate([c.z for _, c, _ in data]))
+    plt = _pyplot()
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 4.0))
+    rows, summary = [], []
+    for (s, cyl, flags), label in zip(data, labels):
+        for coord, values, edges, ax in (("r", cyl.r, r_edges, left), ("z", cyl.z, z_edges, right)):
+            count, fraction, error = stress.fraction_profile(flags, values, edges)
+            centre = cylinder.centres(edges)
+            x = centre / _r_scale(args) if coord == "r" else centre
+            ax.errorbar(x, fraction, yerr=error, marker="o", ms=4, capsize=2, label=label)
+            for b in range(len(centre)):
+                rows.append((label, s.timestep, coord, edges[b], edges[b + 1], centre[b], count[b], fraction[b], error[b]))
+        summary.append(f"{label}: {int(flags.sum())} of {len(flags)} grains with {args.value} >= {args.threshold:g} "
+                       f"({flags.mean() if len(flags) else np.nan:.4f})")
+    _r_axis(left, args, scaled=True)
+    right.set_xlabel("z")
+    for ax in (left, right):
+        ax.set_ylabel(f"fraction of grains with {args.value} >= {args.threshold:g}")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "along", "lo", "hi", "centre", "grains",
+                                                       "fraction", "error"], rows,
+                                           ["compute nscd/crush/atom: fraction of grains past the threshold per r "
+                                            "bin and per z bin; error: sqrt(f (1 - f) / n)"] + summary))
+    for line in summary:
+        print(line)
+
+
+# --- wire-breaks: where fix wire's elements broke ---------------------------------------
+
+def cmd_wire_breaks(args):
+    runs = _parse_runs(args.run)
+    plt = _pyplot()
+    fig, ax = plt.subplots(figsize=(5.0, 5.0))
+    rows, summary = [], []
+    for label, paths in runs:
+        for path in paths:
+            b = wire_breaks.read_breaks(path)
+            r, z = wire_breaks.positions_rz(b, args.axis)
+            ax.scatter(r / _r_scale(args), z, s=14, label=f"{label} ({len(b)})")
+            rows += [(label, int(row[0]), int(row[1]), int(row[2]), row[3], ri, zi) for row, ri, zi in zip(b, r, z)]
+            summary.append(f"{label}: {len(b)} breaks" + (f", z {np.min(z):.3g}..{np.max(z):.3g} (median {np.median(z):.3g}), "
+                                                          f"r {np.min(r):.3g}..{np.max(r):.3g} (median {np.median(r):.3g}), "
+                                                          f"steps {int(b[:, 0].min())}..{int(b[:, 0].max())}" if len(b) else ""))
+    _r_axis(ax, args, scaled=True)
+    ax.set_ylabel("z")
+    if args.zmax is not None:
+        ax.set_ylim(0.0, args.zmax)
+    ax.set_xlim(0.0, None)
+    ax.set_title("where the wire broke (element midpoints)", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    print(_save(fig, args.out), _write_csv(args.out, ["run", "step", "id1", "id2", "tension", "r", "z"], rows, summary))
     for line in summary:
         print(line)
 
@@ -470,6 +664,12 @@ def _common(p, axis=True, bins=True):
                                                "and R is marked on the r axis")
 
 
+def _stress_ids(p):
+    p.add_argument("--stress-id", default="sig", help="ID of compute nscd/stress/atom in the dump's c_ID[k] "
+                                                      "headers (default sig, as examples/column/in.column)")
+    p.add_argument("--crush-id", default="crush", help="ID of compute nscd/crush/atom (default crush)")
+
+
 def parser():
     top = argparse.ArgumentParser(prog="nscd-analysis", description=__doc__)
     sub = top.add_subparsers(dest="command", required=True)
@@ -494,6 +694,51 @@ def parser():
                    help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
     _common(p)
     p.set_defaults(func=cmd_fabric_angle)
+
+    p = sub.add_parser("stress-field", help="principal stress directions in the r-z plane (with --fabric: "
+                                            "the fabric's beside them)")
+    p.add_argument("dump", nargs="+", help="dump custom files with x y z and compute nscd/stress/atom's columns")
+    p.add_argument("--fabric", nargs="+", help="dump custom files of compute fabric/atom: a second panel")
+    p.add_argument("--zbins", type=int, default=8)
+    _stress_ids(p)
+    _common(p)
+    p.set_defaults(func=cmd_stress_field)
+
+    p = sub.add_parser("stress-angle", help="mean signed angle of the major principal stress vs r")
+    p.add_argument("--run", action="append", required=True,
+                   help="LABEL=FILES (comma-separated names or glob patterns); repeat per run")
+    p.add_argument("--method", choices=("grains", "tensor"), default="grains",
+                   help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
+    _stress_ids(p)
+    _common(p)
+    p.set_defaults(func=cmd_stress_angle)
+
+    p = sub.add_parser("stress-profile", help="vertical stress sigma_zz vs r")
+    p.add_argument("dump", nargs="+", help="dump custom files with x y z and compute nscd/stress/atom's columns")
+    p.add_argument("--labels", nargs="+", help="one label per snapshot")
+    _stress_ids(p)
+    _common(p)
+    p.set_defaults(func=cmd_stress_profile)
+
+    p = sub.add_parser("crush-profile", help="fraction of grains past a crushing threshold vs r and vs z")
+    p.add_argument("dump", nargs="+", help="dump custom files with x y z and compute nscd/crush/atom's columns")
+    p.add_argument("--labels", nargs="+", help="one label per snapshot")
+    p.add_argument("--value", choices=tuple(stress.CRUSH), default="index",
+                   help="the column compared: index (default), sigma (F/d^2), fmax or d")
+    p.add_argument("--threshold", type=float, default=1.0, help="a grain counts when value >= this (default 1)")
+    p.add_argument("--zbins", type=int, default=8)
+    _stress_ids(p)
+    _common(p)
+    p.set_defaults(func=cmd_crush_profile)
+
+    p = sub.add_parser("wire-breaks", help="where the wire broke: fix wire's breaks files in (r, z)")
+    p.add_argument("--run", action="append", required=True, help="LABEL=FILE[,FILE...] (breaks files); repeat per run")
+    p.add_argument("--axis", type=float, nargs=2, default=(0.0, 0.0), metavar=("X", "Y"),
+                   help="vertical column axis through (X, Y) (default 0 0)")
+    p.add_argument("--R", type=float, help="the column's radius: r drawn in units of R")
+    p.add_argument("--zmax", type=float, help="top of the z axis")
+    p.add_argument("--out", "-o", required=True, help="output prefix: PREFIX.png and PREFIX.csv")
+    p.set_defaults(func=cmd_wire_breaks)
 
     p = sub.add_parser("force-profile", help="Fig. 5: mean normal force between grains vs r")
     p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
@@ -575,7 +820,7 @@ def main(argv=None):
     args = parser().parse_args(argv)
     try:
         args.func(args)
-    except (DumpError, logs.LogError, ValueError, OSError) as e:
+    except (DumpError, logs.LogError, wire_breaks.BreaksError, ValueError, OSError) as e:
         print(f"nscd-analysis {args.command}: {e}", file=sys.stderr)
         return 1
     return 0

@@ -1,0 +1,39 @@
+"""The breaks files of fix wire (`breaks FILE`: one line per broken element, "step node_id_1
+node_id_2 tension x y z", comment lines starting with #): where the wire broke, in the
+column's cylindrical coordinates."""
+
+import numpy as np
+
+from .cylinder import Cylindrical
+
+FIELDS = ("step", "id1", "id2", "tension", "x", "y", "z")
+
+
+class BreaksError(ValueError):
+    pass
+
+
+def read_breaks(path):
+    """n x 7 array (FIELDS) of a breaks file; an empty file (no break) gives 0 rows. A line
+    that is not 7 numbers is refused naming the file and line."""
+    rows = []
+    with open(path) as f:
+        for number, line in enumerate(f, 1):
+            text = line.strip()
+            if not text or text.startswith("#"):
+                continue
+            words = text.split()
+            try:
+                values = [float(w) for w in words]
+            except ValueError:
+                values = []
+            if len(values) != len(FIELDS) or not np.all(np.isfinite(values)):
+                raise BreaksError(f"{path}, line {number}: expected 7 numbers ({' '.join(FIELDS)}), got '{text}'")
+            rows.append(values)
+    return np.array(rows, dtype=float).reshape(-1, len(FIELDS))
+
+
+def positions_rz(breaks, axis):
+    """r and z of each break's midpoint around the vertical axis through `axis`."""
+    cyl = Cylindrical(breaks[:, 4:7], axis) if len(breaks) else None
+    return (cyl.r, cyl.z) if cyl is not None else (np.zeros(0), np.zeros(0))
