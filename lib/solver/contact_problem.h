@@ -129,11 +129,11 @@ struct SolverOptions {
   // Between two residual checks the sweeps skip the contacts that are open and separating
   // at the check (no impulse, normal velocity admissible without one): a sweep would leave
   // them unchanged unless a neighbour's impulse turns them around, and the next check
-  // (which evaluates every contact) puts those back. On a settled pile half or more of the
-  // contacts found within the neighbour skin are such. The solution meets the same
-  // tolerance on every contact; only the path to it changes. false: every sweep relaxes
-  // every contact (the loop of earlier versions).
-  bool skip_separating = true;
+  // (which evaluates every contact) puts those back. The solution meets the same tolerance
+  // on every contact; the path to it changes, and so does the trajectory: off by default,
+  // as the small column came out lower with it on every seed tried (doc/nscd_solver.md,
+  // "Skipping separating contacts"). false: every sweep relaxes every contact.
+  bool skip_separating = false;
   double tolerance = 1e-6;     // on the scale-free residual (see ResidualTerms)
   int max_sweeps = 1000;
   // solve() evaluates the residual (about the cost of a sweep) before the first sweep and
