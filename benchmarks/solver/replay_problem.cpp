@@ -5,7 +5,7 @@
 //
 //   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
 //                  [--max-sweeps N] [--skip yes|no] [--coarse C] [--repeat N] [--where BINS]
-// Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip yes, no coarse).
+// Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip no, no coarse).
 #include "solver/problem_file.h"
 
 #include <algorithm>

@@ -130,9 +130,9 @@ struct SolverOptions {
   // at the check (no impulse, normal velocity admissible without one): a sweep would leave
   // them unchanged unless a neighbour's impulse turns them around, and the next check
   // (which evaluates every contact) puts those back. The solution meets the same tolerance
-  // on every contact; the path to it changes, and so does the trajectory: off by default,
-  // as the small column came out lower with it on every seed tried (doc/nscd_solver.md,
-  // "Skipping separating contacts"). false: every sweep relaxes every contact.
+  // on every contact; the path to it changes, and so does the trajectory: off by default
+  // until its effect on the column's outcome is settled (doc/nscd_solver.md, "Skipping
+  // separating contacts"). false: every sweep relaxes every contact.
   bool skip_separating = false;
   double tolerance = 1e-6;     // on the scale-free residual (see ResidualTerms)
   int max_sweeps = 1000;
