@@ -224,8 +224,11 @@ def angle_profile(r, blocks, angle, r_edges):
     return count, mean, sem, tensor_angle
 
 
-def cmd_fabric_angle(args):
-    runs = [(label, _pooled_fabric(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
+def _angle_plot(args, pooled, ylabel, what):
+    """Mean signed angle vs r of each run's principal direction (fabric-angle, stress-angle):
+    pooled(args, patterns, steps, last) gives (r, z, blocks, angle, snapshots); `what` names
+    the direction in the summary lines."""
+    runs = [(label, pooled(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
     r_edges = _r_edges(args, np.concatenate([data[0] for _, data in runs]))
     rc = cylinder.centres(r_edges)
     plt = _pyplot()
@@ -238,11 +241,11 @@ def cmd_fabric_angle(args):
                     capsize=2, label=label)
         for b in range(len(rc)):
             rows.append((label, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b], tensor_angle[b]))
-        overall = np.nanmean(angle)
-        summary.append(f"{label}: mean angle over all grains {overall:+.4f} rad ({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
+        summary.append(f"{label}: mean angle {what}over all grains {np.nanmean(angle):+.4f} rad "
+                       f"({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
     ax.axhline(0.0, color="0.6", lw=0.8)
     _r_axis(ax, args, scaled=True)
-    ax.set_ylabel("signed angle of the largest fabric direction (rad)")
+    ax.set_ylabel(ylabel)
     ax.set_title("mean over grains" if args.method == "grains" else "angle of the mean tensor", fontsize=9)
     ax.legend()
     fig.tight_layout()
@@ -250,6 +253,10 @@ def cmd_fabric_angle(args):
                                                        "sem_rad", "tensor_angle_rad"], rows, summary))
     for line in summary:
         print(line)
+
+
+def cmd_fabric_angle(args):
+    _angle_plot(args, _pooled_fabric, "signed angle of the largest fabric direction (rad)", "")
 
 
 # --- stress fields: stress-field, stress-angle, stress-profile, crush-profile ------------
@@ -293,31 +300,8 @@ def cmd_stress_field(args):
 
 
 def cmd_stress_angle(args):
-    runs = [(label, _pooled_stress(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
-    r_edges = _r_edges(args, np.concatenate([data[0] for _, data in runs]))
-    rc = cylinder.centres(r_edges)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(6.0, 4.2))
-    rows, summary = [], []
-    for label, (r, _, blocks, angle, nsnap) in runs:
-        count, mean, sem, tensor_angle = angle_profile(r, blocks, angle, r_edges)
-        value = tensor_angle if args.method == "tensor" else mean
-        ax.errorbar(rc / _r_scale(args), value, yerr=None if args.method == "tensor" else sem, marker="o", ms=4,
-                    capsize=2, label=label)
-        for b in range(len(rc)):
-            rows.append((label, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b], tensor_angle[b]))
-        summary.append(f"{label}: mean angle of the major principal stress over all grains {np.nanmean(angle):+.4f} rad "
-                       f"({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
-    ax.axhline(0.0, color="0.6", lw=0.8)
-    _r_axis(ax, args, scaled=True)
-    ax.set_ylabel("signed angle of the major principal stress (rad)")
-    ax.set_title("mean over grains" if args.method == "grains" else "angle of the mean tensor", fontsize=9)
-    ax.legend()
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "mean_angle_rad",
-                                                       "sem_rad", "tensor_angle_rad"], rows, summary))
-    for line in summary:
-        print(line)
+    _angle_plot(args, _pooled_stress, "signed angle of the major principal stress (rad)",
+                "of the major principal stress ")
 
 
 def _labelled_snapshots(args):
