@@ -1040,6 +1040,18 @@ class WireBoundPyramidTest : public WireLoopTest {
     run("fix solver balls nscd tolerance 1e-9 max_sweeps 1000");
   }
   double top_height() { return position(kLoopNodes + 14)[2]; }
+  // The floor's and the wire's vertical loads on the balls, averaged over 50 samples 10 steps
+  // apart (the loop still trembles).
+  void sample_loads(double &floor_z, double &on_grains)
+  {
+    const int samples = 50;
+    floor_z = on_grains = 0.0;
+    for (int k = 0; k < samples; k++) {
+      run("run 10");
+      floor_z += fix_value("floor", 2) / samples;
+      on_grains += fix_value("w", 9) / samples;
+    }
+  }
   // How many ranks own at least one loop node.
   int ranks_holding_the_loop()
   {
@@ -1054,13 +1066,8 @@ TEST_F(WireBoundPyramidTest, LoopHoldsThePyramidAtItsClosedFormHeightOnAnyRankCo
 {
   pyramid(true);
   run("run 1000");
-  const int samples = 50;
-  double floor_z = 0.0, on_grains = 0.0;
-  for (int k = 0; k < samples; k++) {
-    run("run 10");
-    floor_z += fix_value("floor", 2) / samples;
-    on_grains += fix_value("w", 9) / samples;
-  }
+  double floor_z, on_grains;
+  sample_loads(floor_z, on_grains);
   const double wire = kLoopNodes * kNodeMass, total = 14 * kBall + wire;
   const double height = 0.5 + 2.0 * std::sqrt(0.5);    // balls touching: top centre height
   std::printf("[ wire-bound pyramid, %d ranks, loop on %d ] floor %.10g (weight %.10g), top %.10g "
@@ -1086,13 +1093,8 @@ TEST_F(WireBoundPyramidTest, LoopHoldsThePyramidUnderRcbBalance)
   commands({"comm_style tiled"});
   pyramid(true);
   commands({"balance 1.0 rcb", "fix lb all balance 100 1.0 rcb", "run 1000"});
-  const int samples = 50;
-  double floor_z = 0.0, on_grains = 0.0;
-  for (int k = 0; k < samples; k++) {
-    run("run 10");
-    floor_z += fix_value("floor", 2) / samples;
-    on_grains += fix_value("w", 9) / samples;
-  }
+  double floor_z, on_grains;
+  sample_loads(floor_z, on_grains);
   const double wire = kLoopNodes * kNodeMass, total = 14 * kBall + wire;
   const double height = 0.5 + 2.0 * std::sqrt(0.5), top = top_height();    // collective
   const int holding = ranks_holding_the_loop();
