@@ -43,7 +43,7 @@ void print_where(const ProblemFile &file, const SolverOptions &options, int bins
   std::vector<double> error, scale;
   SolverCommunication communication;
   communication.sum = [&](double *values, int n) {
-    if (n != 7) return;    // the residual terms' sums (see reduce())
+    if (n != ResidualTerms::kSummed) return;    // only the residual terms' sum at a check
     problem.contact_residuals(error, scale);
     double scale_squared = 0.0;
     for (double s : scale) scale_squared += s * s;

@@ -569,11 +569,11 @@ SolveControl::Step SolveControl::at_check(double residual, int sweeps)
 ResidualTerms reduce(const ResidualTerms &mine, const SolverCommunication &communication)
 {
   if (!communication.sum) return mine;
-  double sums[7] = {mine.error_squared,          mine.scale_squared,
+  double sums[ResidualTerms::kSummed] = {mine.error_squared,          mine.scale_squared,
                     static_cast<double>(mine.contacts), static_cast<double>(mine.active),
                     static_cast<double>(mine.sticking), static_cast<double>(mine.sliding),
                     static_cast<double>(mine.local_failures)};
-  communication.sum(sums, 7);
+  communication.sum(sums, ResidualTerms::kSummed);
   ResidualTerms all;
   all.error_squared = sums[0];
   all.scale_squared = sums[1];

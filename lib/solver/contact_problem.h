@@ -172,6 +172,9 @@ struct ResidualTerms {
   long sticking = 0;
   long sliding = 0;             // includes active frictionless contacts
   long local_failures = 0;      // local solves that found no exact slip root (expect 0)
+  // iterate() sums these across ranks as one array of this many values (error_squared,
+  // scale_squared, then the counts), in one SolverCommunication::sum call per check.
+  static constexpr int kSummed = 7;
 
   void merge(const ResidualTerms &other);
   // sqrt(error_squared / scale_squared): a relative velocity error, independent of units,
