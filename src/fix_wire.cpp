@@ -61,7 +61,8 @@ enum Diagnostic {
 }    // namespace
 
 
-/* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [radius R]
+/* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [mu_ww_s M] [mu_ww_d M]
+                     [grain_friction TYPES MU_S MU_D] [radius R]
                      [damp C] [substeps N|auto|stable] [dt_sp DT] [safety S] [contacts_per_node N]
                      [skin S] [inertia S] */
 FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
@@ -134,8 +135,9 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
 {
   const std::string key = arg[iarg];
   const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
-  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius, damp, substeps, "
-                         "dt_sp, safety, contacts_per_node, skin, inertia, strength, strength_spread, seed, breaks";
+  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, grain_friction, radius, damp, "
+                         "substeps, dt_sp, safety, contacts_per_node, skin, inertia, strength, strength_spread, seed, breaks";
+  if (key == "grain_friction") return parse_grain_friction(narg, arg, iarg);
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
       {"k_n", &law.k_n}, {"gamma_n", &law.gamma_n}, {"k_t", &law.k_t}, {"gamma_t", &law.gamma_t},
@@ -146,7 +148,8 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
   const bool known = plain.count(key) || key == "substeps" || key == "breaks";
   if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
-  if (plain.count(value) || strcmp(value, "substeps") == 0 || strcmp(value, "breaks") == 0)
+  if (plain.count(value) || strcmp(value, "substeps") == 0 || strcmp(value, "breaks") == 0 ||
+      strcmp(value, "grain_friction") == 0)
     error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
                "(valid keywords: {}; each takes one value)", key, value, keywords);
   if (key == "breaks") {
@@ -185,6 +188,24 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
     error->all(FLERR, "fix wire: dt_sp {} must be > 0; for the automatic substep give 'substeps auto' (the default)", x);
   k_n_given = k_n_given || key == "k_n";
   if (key == "dt_sp") requested_substeps = 0;
+}
+
+/* grain_friction TYPES MU_S MU_D: the wire-grain friction of the grains of these types (a
+   type or a range, as in pair_coeff); the other grains keep mu_s, mu_d. */
+void FixWire::parse_grain_friction(int narg, char **arg, int &iarg)
+{
+  if (iarg + 3 >= narg)
+    error->all(FLERR, "fix wire: grain_friction needs three values, TYPES MU_S MU_D (e.g. 'grain_friction 2 0.3 "
+               "0.2'), got {}", narg - iarg - 1);
+  GrainFriction g{};
+  utils::bounds(FLERR, arg[iarg + 1], 1, atom->ntypes, g.lo, g.hi, error);
+  g.mu_s = nscd_args::number(lmp, "fix wire", "grain_friction mu_s", arg[iarg + 2]);
+  g.mu_d = nscd_args::number(lmp, "fix wire", "grain_friction mu_d", arg[iarg + 3]);
+  if (!(g.mu_s >= 0.0 && std::isfinite(g.mu_s)) || !(g.mu_d >= 0.0 && g.mu_d <= g.mu_s))
+    error->all(FLERR, "fix wire: grain_friction {}: mu_s {} and mu_d {} must be finite with 0 <= mu_d <= mu_s",
+               arg[iarg + 1], g.mu_s, g.mu_d);
+  grain_friction.push_back(g);
+  iarg += 2;    // three values: the caller steps over two
 }
 
 int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
@@ -391,6 +412,13 @@ void FixWire::make_contact_model()
     lib->contacts->set_wire_wire_friction(mu_ww_s, mu_ww_d);
   } catch (std::exception &e) {
     error->all(FLERR, "fix wire: mu_ww_s {} and mu_ww_d {}: {}", mu_ww_s, mu_ww_d, e.what());
+  }
+  // Per grain type: the law's index in the contact model (0: mu_s, mu_d); a later
+  // grain_friction for a type replaces an earlier one.
+  grain_law_of_type.assign(atom->ntypes + 1, 0);
+  for (const GrainFriction &g : grain_friction) {
+    const int law = lib->contacts->add_grain_friction(g.mu_s, g.mu_d);
+    for (int t = g.lo; t <= g.hi; t++) grain_law_of_type[t] = law;
   }
   lib->contacts->add_memories(memories);
   lib->contacts->record_contacts(contacts_recorded);
@@ -739,7 +767,8 @@ void FixWire::update_scene(bool reindexed)
   scene.grains.resize(atom_of_grain.size());
   for (size_t g = 0; g < atom_of_grain.size(); g++) {
     const int i = atom_of_grain[g];
-    scene.grains[g] = {atom->tag[i], &avec->shape_of(i), avec->pose(i), vec3(atom->v[i]), vec3(avec->omega[i])};
+    scene.grains[g] = {atom->tag[i], &avec->shape_of(i), avec->pose(i), vec3(atom->v[i]), vec3(avec->omega[i]),
+                       grain_law_of_type[atom->type[i]]};
   }
   scene.boundaries.clear();
   for (BoundaryView &b : lib->boundaries) {

@@ -89,6 +89,12 @@ class FixWire : public Fix {
   bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
   bool k_n_given = false;                          // k_n 0 given, or the default
   double mu_ww_s = -1.0, mu_ww_d = -1.0;           // wire-wire friction; < 0: not given
+  struct GrainFriction {
+    int lo, hi;                  // grain types
+    double mu_s, mu_d;
+  };
+  std::vector<GrainFriction> grain_friction;    // option grain_friction, in the order given
+  std::vector<int> grain_law_of_type;           // per atom type: the contact model's law
   bool contacts_recorded = false;                  // for compute wire/contacts
   double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
   int requested_substeps = 0;    // 0: from dt_sp or chosen (auto or stable)
@@ -143,6 +149,7 @@ class FixWire : public Fix {
   int rebuilds_at_start = 0;
 
   void parse_option(int narg, char **arg, int &iarg);
+  void parse_grain_friction(int narg, char **arg, int &iarg);
   void check_partners();
   void find_boundaries();
   void check_contacts_possible();

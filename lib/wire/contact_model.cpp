@@ -9,6 +9,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 namespace nscd::wire {
 
@@ -67,7 +68,7 @@ bool ContactMemory::empty() const
 }
 
 ContactModel::ContactModel(const SoftContactLaw &law, double wire_radius, double skin)
-    : law_(law), wire_wire_law_(law), radius_(wire_radius), skin_(skin)
+    : law_(law), wire_wire_law_(law), grain_laws_{law}, radius_(wire_radius), skin_(skin)
 {
   validate(law_);
   if (!(wire_radius > 0.0) || !std::isfinite(wire_radius) || !(skin > 0.0) || !std::isfinite(skin)) {
@@ -77,17 +78,30 @@ ContactModel::ContactModel(const SoftContactLaw &law, double wire_radius, double
   }
 }
 
-void ContactModel::set_wire_wire_friction(double mu_s, double mu_d)
+namespace {
+// The law with other friction coefficients; `what` names the contacts in an error.
+SoftContactLaw with_friction(SoftContactLaw law, double mu_s, double mu_d, const char *what)
 {
-  SoftContactLaw law = law_;
   law.mu_s = mu_s;
   law.mu_d = mu_d;
   try {
     validate(law);
   } catch (const std::invalid_argument &e) {
-    throw std::invalid_argument(std::string("wire-wire friction: ") + e.what());
+    throw std::invalid_argument(std::string(what) + ": " + e.what());
   }
-  wire_wire_law_ = law;
+  return law;
+}
+}    // namespace
+
+void ContactModel::set_wire_wire_friction(double mu_s, double mu_d)
+{
+  wire_wire_law_ = with_friction(law_, mu_s, mu_d, "wire-wire friction");
+}
+
+int ContactModel::add_grain_friction(double mu_s, double mu_d)
+{
+  grain_laws_.push_back(with_friction(law_, mu_s, mu_d, "wire-grain friction"));
+  return (int) grain_laws_.size() - 1;
 }
 
 void ContactModel::set_elements(std::vector<std::array<std::int64_t, 2>> all_elements)
@@ -115,6 +129,11 @@ const ShapeFeatures &ContactModel::features_of(const Spheropolyhedron &shape)
 
 void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed)
 {
+  for (const GrainCopy &g : scene.grains)
+    if (g.law < 0 || g.law >= (int) grain_laws_.size())
+      throw std::invalid_argument("wire contacts: grain " + std::to_string(g.id) + " asks for friction law " +
+                                  std::to_string(g.law) + ", but only " + std::to_string(grain_laws_.size()) +
+                                  " are defined (add_grain_friction)");
   if (reindexed) carry_memories();
   // A grain moved since the last step brings its pairs' last gaps closer by as much.
   if (lists_valid_ && scene.grains.size() == grains_last_step_.size()) {
@@ -424,7 +443,7 @@ bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vec
     const LeverWeights lever = lever_weights(point.s_i);
     const Vec3 arm = point.point - g.pose.position;
     const Vec3 v_rel = lever.on_a * v[p.a] + lever.on_b * v[p.b] - (g.velocity + g.angular_velocity.cross(arm));
-    const SoftContactForce r = soft_contact_force(law_, point.normal, -point.gap, v_rel, dt, spring[k]);
+    const SoftContactForce r = soft_contact_force(grain_laws_[g.law], point.normal, -point.gap, v_rel, dt, spring[k]);
     const Vec3 force = weight * r.force;
     if (recording_) record(p.key, ContactRecord::wire_grain, k, point, weight, r);
     f[p.a] += lever.on_a * force;

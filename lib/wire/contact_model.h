@@ -109,6 +109,7 @@ struct GrainCopy {
   Pose pose;                        // held over the grain step
   Vec3 velocity = Vec3::Zero();     // of the centre
   Vec3 angular_velocity = Vec3::Zero();    // world frame
+  int law = 0;                      // its friction: ContactModel::add_grain_friction's index
 };
 
 struct BoundaryLink {
@@ -156,6 +157,10 @@ class ContactModel {
   // default the same); throws std::invalid_argument naming a bad value.
   void set_wire_wire_friction(double mu_s, double mu_d);
   const SoftContactLaw &wire_wire_law() const { return wire_wire_law_; }
+  // Friction between the wire and some grains (static, dynamic), the other constants of the
+  // law shared: returns the index a GrainCopy gives as its `law` (0: the law given to the
+  // constructor). Throws std::invalid_argument naming a bad value.
+  int add_grain_friction(double mu_s, double mu_d);
 
   // Every element of the wire as (lower id, higher id), for the rule that elements joined
   // by a node or by one element do not touch.
@@ -257,6 +262,7 @@ class ContactModel {
 
   SoftContactLaw law_;
   SoftContactLaw wire_wire_law_;    // law_ with the wire-wire friction
+  std::vector<SoftContactLaw> grain_laws_;    // [0] = law_, then add_grain_friction's
   bool recording_ = false;
   int recorded_substeps_ = 0;
   std::vector<ContactRecord> records_;

@@ -531,7 +531,15 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   EXPECT_NE(error_of("fix w wire wire k_n 1 mu_s 0.2 mu_d 0.5").find("mu"), std::string::npos);
   const std::string bogus = error_of("fix w wire wire radius 0.02 bogus 1");
   EXPECT_NE(bogus.find("unknown keyword 'bogus'"), std::string::npos) << bogus;
-  EXPECT_NE(bogus.find("k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, radius"), std::string::npos) << bogus;
+  EXPECT_NE(bogus.find("k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, grain_friction, radius"),
+            std::string::npos) << bogus;
+  // grain_friction TYPES MU_S MU_D: three values, types in range, 0 <= mu_d <= mu_s
+  const std::string short_list = error_of("fix w wire wire k_n 1 radius 0.02 grain_friction 1 0.3");
+  EXPECT_NE(short_list.find("grain_friction needs three values"), std::string::npos) << short_list;
+  EXPECT_NE(error_of("fix w wire wire k_n 1 radius 0.02 grain_friction 1 0.2 0.5").find("mu_d 0.5"), std::string::npos);
+  EXPECT_NE(error_of("fix w wire wire k_n 1 radius 0.02 grain_friction 1 -1 0").find("mu_s -1"), std::string::npos);
+  const std::string type = error_of("fix w wire wire k_n 1 radius 0.02 grain_friction 7 0.3 0.2");
+  EXPECT_NE(type.find("7"), std::string::npos) << type;
   // a keyword where a value belongs names both and the list
   const std::string early = error_of("fix w wire wire radius k_n 100");
   EXPECT_NE(early.find("keyword 'radius' needs a value"), std::string::npos) << early;
@@ -1143,7 +1151,7 @@ class WireOnBoundaryTest : public WireTest {
   }
   // Gravity along (v_gx, v_gy, v_gz): variables, so that a test can tilt it (a fix gravity
   // defined after fix wire would act too late for the subcycle).
-  void wire_and_solver(const std::string &gravity = "0 0 -1")
+  void wire_and_solver(const std::string &gravity = "0 0 -1", const std::string &extra = "")
   {
     std::istringstream g(gravity);
     std::string gx, gy, gz;
@@ -1151,7 +1159,7 @@ class WireOnBoundaryTest : public WireTest {
     commands({"variable gx equal " + gx, "variable gy equal " + gy, "variable gz equal " + gz,
               "fix g wire gravity 1.0 vector v_gx v_gy v_gz",
               "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) +
-                  " gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.9 damp " + num(kDamp),
+                  " gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.9 damp " + num(kDamp) + extra,
               "fix solver balls nscd tolerance 1e-9 max_sweeps 500"});
   }
   void tilt(double theta)
@@ -1194,6 +1202,19 @@ class WireOnBoundaryTest : public WireTest {
     out.gained = mean_velocity_x() - v0;
     out.expected = (A / k - v0) * (1.0 - std::exp(-k * T));
     return out;
+  }
+  // tilt_to_slip, printed under `label` and checked: held (moved by the tangential springs'
+  // transient only, 2.7e-5 on the floor), the support taking the weight along the slope,
+  // sliding with the closed form's gain in velocity.
+  void expect_held_then_slides(const std::string &label, double mu, const std::function<double()> &support_x)
+  {
+    const Slope s = tilt_to_slip(mu, support_x);
+    std::printf("[ %s ] held at 0.9 mu: moved %.3g, support along x %.10g (weight along the slope %.10g); "
+                "sliding at 1.1 mu: gains %.6g in velocity (closed form %.6g)\n",
+                label.c_str(), s.moved_held, s.support_x, s.weight_along, s.gained, s.expected);
+    EXPECT_LT(std::abs(s.moved_held), 1e-4);
+    EXPECT_NEAR(s.support_x / s.weight_along, 1.0, 1e-6);
+    EXPECT_NEAR(s.gained / s.expected, 1.0, 1e-2);
   }
 };
 
@@ -1321,13 +1342,7 @@ TEST_F(WireOnBoundaryTest, FloorFrictionHoldsTheWireBelowTheSlopeOfMuAndItSlides
 {
   wire_on_floor();
   wire_and_solver();
-  const Slope s = tilt_to_slip(kMu, [&] { return fix_value("floor", 0); });
-  std::printf("[ wire on slope ] held at 0.9 mu: moved %.3g, floor along x %.10g (weight along the "
-              "slope %.10g); sliding at 1.1 mu: gains %.6g in velocity (closed form %.6g)\n",
-              s.moved_held, s.support_x, s.weight_along, s.gained, s.expected);
-  EXPECT_LT(std::abs(s.moved_held), 1e-4);    // tangential springs and their transient (2.7e-5)
-  EXPECT_NEAR(s.support_x / s.weight_along, 1.0, 1e-6);
-  EXPECT_NEAR(s.gained / s.expected, 1.0, 1e-2);
+  expect_held_then_slides("wire on slope", kMu, [&] { return fix_value("floor", 0); });
 }
 
 // The same wire on the flat top face of a grain: every element touches the face with its two
@@ -1361,13 +1376,17 @@ TEST_F(WireOnBoundaryTest, GrainFaceFrictionHoldsTheWireBelowTheSlopeOfMuAndItSl
 {
   wire_on_floor(false, 0.0, kRadius, true);
   wire_and_solver();
-  const Slope s = tilt_to_slip(0.9, [&] { return fix_value("w", 7); });
-  std::printf("[ wire on a grain slope ] held at 0.9 mu: moved %.3g, grain along x %.10g (weight "
-              "along the slope %.10g); sliding at 1.1 mu: gains %.6g in velocity (closed form %.6g)\n",
-              s.moved_held, s.support_x, s.weight_along, s.gained, s.expected);
-  EXPECT_LT(std::abs(s.moved_held), 1e-4);
-  EXPECT_NEAR(s.support_x / s.weight_along, 1.0, 1e-6);
-  EXPECT_NEAR(s.gained / s.expected, 1.0, 1e-2);
+  expect_held_then_slides("wire on a grain slope", 0.9, [&] { return fix_value("w", 7); });
+}
+
+// grain_friction gives the grains of a type their own wire-grain friction: the slab (type 1)
+// at 0.4 holds the wire below the slope of 0.4 and lets it slide above it, where fix wire's
+// mu_s 0.9 would hold it.
+TEST_F(WireOnBoundaryTest, GrainFrictionOfATypeSetsItsSlope)
+{
+  wire_on_floor(false, 0.0, kRadius, true);
+  wire_and_solver("0 0 -1", " grain_friction 1 0.4 0.4");
+  expect_held_then_slides("wire on a grain slope, grain_friction 0.4", 0.4, [&] { return fix_value("w", 7); });
 }
 
 // A loading plate (fix nscd/plate, weight W) falls onto the wire lying on the floor and

@@ -178,6 +178,47 @@ TEST(WireWireContact, SlidingThresholdFollowsTheWireWireFriction)
   EXPECT_THROW(model.set_wire_wire_friction(-0.1, 0.0), std::invalid_argument);
 }
 
+// A grain with its own friction (add_grain_friction) holds and lets an element slide by its
+// own coefficients, the others by the model's: an element pressed onto a box's face and
+// dragged along it carries k_t times the drag while sticking under either law, and
+// mu_d f_n once slipped: 0.1 for the grain of law 1, the model's 0.5 for law 0.
+TEST(WireGrainContact, GrainOfItsOwnFrictionSlidesAtItsCoefficient)
+{
+  const double dt = 1e-5;
+  // The ratio |f_x| / f_z of the contact force on the element after dragging it by `drag`.
+  auto ratio_after = [&](bool own_law, double drag) {
+    ElementOnBox e(Vec3(-0.3, 0, 0), Vec3(0.3, 0, 0));
+    e.x = {Vec3(-0.3, 0, e.z), Vec3(0.3, 0, e.z)};
+    ContactScene scene = test::chain_scene(e.x, {{7, &e.box, place(e.box, Vec3::Zero())}});
+    if (own_law) scene.grains[0].law = e.model.add_grain_friction(0.2, 0.1);
+    e.model.begin_step(scene, 1e-3, true);
+    const int steps = 200;
+    const Vec3 u(drag / (steps * dt), 0, 0);
+    e.v = {u, u};
+    Vec3 f = Vec3::Zero();
+    for (int k = 0; k < steps; ++k) f = e.substep();
+    EXPECT_EQ(e.points, 1);    // the element touches the face (along its whole length)
+    return std::abs(f.x()) / f.z();
+  };
+  const double depth = 1e-3, slip = 0.2 * sticky_law().k_n * depth / sticky_law().k_t;
+  EXPECT_NEAR(ratio_after(true, 0.25 * slip), 0.05, 1e-6);       // sticking: k_t drag / (k_n depth)
+  EXPECT_NEAR(ratio_after(false, 0.25 * slip), 0.05, 1e-6);
+  EXPECT_NEAR(ratio_after(true, 20.0 * slip), 0.1, 1e-9);        // slipped at its mu_d
+  EXPECT_NEAR(ratio_after(false, 20.0 * slip), 0.5, 1e-9);       // the model's mu_d
+  ContactModel model(sticky_law(), 0.02, 0.05);
+  EXPECT_THROW(model.add_grain_friction(0.1, 0.2), std::invalid_argument);    // mu_d > mu_s
+  EXPECT_THROW(model.add_grain_friction(-0.1, 0.0), std::invalid_argument);
+  EXPECT_EQ(model.add_grain_friction(0.3, 0.3), 1);
+  ContactScene scene = test::chain_scene({Vec3(0, 0, 2), Vec3(1, 0, 2)}, {});
+  const Spheropolyhedron box = make_box(0.5, 0.5, 0.5, 0.02);
+  GrainCopy unknown;
+  unknown.shape = &box;
+  unknown.law = 2;    // only 0 and 1 exist
+  scene.grains.push_back(unknown);
+  model.set_elements(test::chain_elements(2));
+  EXPECT_THROW(model.begin_step(scene, 1e-3, false), std::invalid_argument);
+}
+
 // Recorded contact points (for compute wire/contacts): the crossing of two elements is one
 // point, at the crossing, normal from the upper element to the lower one (the computing
 // one), its normal force averaged over the step's substeps: closed in the first of two
