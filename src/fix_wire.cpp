@@ -209,7 +209,13 @@ void FixWire::parse_grain_friction(int narg, char **arg, int &iarg)
 }
 
 int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
-double FixWire::compute_vector(int n) { return diagnostics[n]; }
+double FixWire::compute_vector(int n)
+{
+  if (n != kTensionDiagnostic && n != kRunTensionDiagnostic) return diagnostics[n];
+  double mine = n == kTensionDiagnostic ? largest_tension : largest_tension_in_run, all = 0.0;
+  MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return all;
+}
 
 void *FixWire::extract(const char *name, int &dim)
 {
@@ -593,7 +599,7 @@ void FixWire::gather_elements()
 void FixWire::post_force(int /*vflag*/)
 {
   const double wall_start = platform::walltime(), cpu_start = platform::cputime();
-  if (strength > 0.0) break_overstretched_elements();
+  check_element_tensions();
   const bool reindexed = neighbor->lastcall != indexed_at;
   if (reindexed) index_atoms();
   if (topology_changed && reindexed) {    // this step's neighbour build dropped the broken elements

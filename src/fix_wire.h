@@ -123,8 +123,12 @@ class FixWire : public Fix {
   bool counting_comm = false;                // the subcycle's communication: counted
   std::vector<double> grain_force_buffer;    // 6 per local atom
 
-  std::array<double, 14> diagnostics{};
+  std::array<double, 16> diagnostics{};
   static constexpr int kBrokenDiagnostic = 13;    // elements broken so far (option strength)
+  // The largest element tension at this step's start and over every step since the fix was
+  // defined, on this rank (compute_vector takes the maximum over the ranks).
+  static constexpr int kTensionDiagnostic = 14, kRunTensionDiagnostic = 15;
+  double largest_tension = 0.0, largest_tension_in_run = 0.0;
 
   // option strength (fix_wire_break.cpp)
   double strength = 0.0;            // tension at which an element breaks; 0: never
@@ -136,7 +140,7 @@ class FixWire : public Fix {
   bigint elements_broken = 0;
   bool topology_changed = false;    // elements broke: gather the topology after the next build
   bool specials_stale = false;      // elements broke: rebuild the special lists (pre_exchange)
-  void break_overstretched_elements();
+  void check_element_tensions();
   void remove_from_topology(const std::vector<struct WireBreak> &broken);
   void report_breaks(const std::vector<struct WireBreak> &broken);
   bool warned_fast_motion = false;

@@ -48,19 +48,24 @@ double FixWire::element_strength(tagint a, tagint b) const
   return strength * std::pow(-std::log1p(-u), 1.0 / strength_spread);
 }
 
-/* At the start of a step (positions and ghosts current): each rank tests the elements of its
-   bond list, the breaks are shared, and every rank removes them from its atoms' topology. */
-void FixWire::break_overstretched_elements()
+/* At the start of a step (positions and ghosts current): each rank measures the tensions of
+   the elements of its bond list (their largest, for output) and, with a strength, the breaks
+   are shared and every rank removes them from its atoms' topology. */
+void FixWire::check_element_tensions()
 {
   std::vector<Break> mine;
+  largest_tension = 0.0;
   for (int n = 0; bond && n < neighbor->nbondlist; n++) {
     const int *b = neighbor->bondlist[n];
     const double *xa = atom->x[b[0]], *xb = atom->x[b[1]];
     const double tension = bond->element(b[2], xa, xb).tension;
-    if (tension >= element_strength(atom->tag[b[0]], atom->tag[b[1]]))
+    largest_tension = std::max(largest_tension, tension);
+    if (strength > 0.0 && tension >= element_strength(atom->tag[b[0]], atom->tag[b[1]]))
       mine.push_back({(double) atom->tag[b[0]], (double) atom->tag[b[1]], tension, 0.5 * (xa[0] + xb[0]),
                       0.5 * (xa[1] + xb[1]), 0.5 * (xa[2] + xb[2])});
   }
+  largest_tension_in_run = std::max(largest_tension_in_run, largest_tension);
+  if (!(strength > 0.0)) return;
   const std::vector<Break> broken = gather_records(mine, world, true);
   if (broken.empty()) return;
   remove_from_topology(broken);

@@ -61,7 +61,7 @@ class WireBreakTest : public LammpsTest {
               "variable free atom \"id > 1\"", "group free variable free",
               "group last id " + std::to_string(elements + 1), "timestep " + num(kDt),
               "variable F equal " + num(rate) + "*time", "fix pull last addforce v_F 0 0",
-              "fix w free wire damp 0.05 " + strength + " breaks " + scratch("breaks.txt")});
+              "fix w free wire damp 0.05 " + strength + (strength.empty() ? "" : " breaks " + scratch("breaks.txt"))});
   }
   double value(const std::string &formula) { return lmp->input->variable->compute_equal(formula); }
   std::vector<BreakLine> breaks()
@@ -85,6 +85,31 @@ TEST_F(WireBreakTest, OneElementBreaksWhenThePullReachesItsStrength)
   EXPECT_LT(b[0].tension, 1.0 + 0.5 * 2 * kDt);    // at most two steps of the ramp past it
   EXPECT_EQ(value("bonds"), 0.0);
   EXPECT_EQ(value("f_w[14]"), 1.0);
+}
+
+// Without a strength fix wire still reports the largest element tension, at each step's start
+// (f_w[15]) and over every step so far (f_w[16]): the slowly pulled wire carries the pull in
+// every element; once the pull is gone the present tension falls while the largest stays the
+// largest of the values each step showed (the same numbers, so equal to the last bit).
+TEST_F(WireBreakTest, LargestTensionNowAndSoFarFollowThePull)
+{
+  pulled_wire(20, 0.5, "");
+  run("run 400");    // the pull grows to 0.5 * 400 * dt = 1
+  const double pull = value("v_F");
+  EXPECT_NEAR(value("f_w[15]") / pull, 1.0, 1e-2);
+  EXPECT_NEAR(value("f_w[16]") / pull, 1.0, 1e-2);
+  double largest = value("f_w[16]");
+  run("variable F equal 0.0");
+  for (int step = 0; step < 400; step++) {
+    run("run 1 pre no post no");
+    largest = std::max(largest, value("f_w[15]"));
+  }
+  std::printf("[ largest tension ] pull %.6g; 400 steps after its release: now %.3g, largest so far %.6g\n", pull,
+              value("f_w[15]"), value("f_w[16]"));
+  EXPECT_LT(value("f_w[15]"), 0.1 * pull);
+  EXPECT_EQ(value("f_w[16]"), largest);
+  EXPECT_EQ(value("f_w[14]"), 0.0);    // nothing breaks without a strength
+  EXPECT_EQ(value("bonds"), 20.0);
 }
 
 // 20 elements with Weibull strengths (scale 1, modulus 20, seed 7): the weakest breaks first,
