@@ -1,4 +1,16 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Tables (markdown) of the runs of benchmarks/mpi/run.sh; exits 1 if a tolerance fails.
 
   check.py pour REF DIR...      piles poured by in.pour, each compared with REF (1 rank)

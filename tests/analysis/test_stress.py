@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Stress and crushing fields around the column axis (tools/nscd_analysis/stress.py and the
 stress-field, stress-angle, stress-profile and crush-profile subcommands) on synthetic dumps
 with known answers: uniaxial compressions along known r-z directions, a sigma_zz that grows

@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Per-grain stresses (compute nscd/stress/atom) and crushing indices (compute nscd/crush/atom)
 around the column's axis: principal stress directions in the r-z plane, the signed angle of
 the major principal stress, sigma_zz vs r, and the fraction of grains past a crushing
