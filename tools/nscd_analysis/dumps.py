@@ -26,6 +26,12 @@ import numpy as np
 _INDEXED = re.compile(r"^[cf]_([^\[\]]+)\[(\d+)\]$")
 
 
+def indexed_entry(header_name):
+    """(ID, k) of a header entry c_ID[k] or f_ID[k]; None for any other name."""
+    m = _INDEXED.match(header_name)
+    return (m.group(1), int(m.group(2))) if m else None
+
+
 class DumpError(ValueError):
     """A dump that cannot be read, or a column it does not have."""
 
@@ -58,8 +64,7 @@ class Snapshot:
             return self.columns.index(name)
         if layout is not None and name in layout:
             k = layout[name]
-            found = [i for i, c in enumerate(self.columns)
-                     if _INDEXED.match(c) and int(_INDEXED.match(c).group(2)) == k]
+            found = [i for i, c in enumerate(self.columns) if indexed_entry(c) and indexed_entry(c)[1] == k]
             if len(found) == 1:
                 return found[0]
             if len(found) > 1:
