@@ -16,11 +16,11 @@ markdown table.
 
     /usr/bin/python3 growth.py WORK_DIR RAMP
 """
+import argparse
 import glob
 import os
 import re
 import statistics
-import sys
 
 from report import read_log, setting
 
@@ -74,4 +74,8 @@ def main(work, ramp):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "0")
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("work", help="folder of growth.sh's logs")
+    parser.add_argument("ramp", nargs="?", default="0", help="the RAMP of the runs, as in their log names (default 0)")
+    args = parser.parse_args()
+    main(args.work, args.ramp)

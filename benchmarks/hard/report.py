@@ -16,6 +16,7 @@ of the file is kept) and the speed-against-error plot.
 
     /usr/bin/python3 report.py WORK_DIR BENCHMARKS.md PLOT.png
 """
+import argparse
 import glob
 import os
 import platform
@@ -209,4 +210,9 @@ def main(work, markdown, plot):
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:4])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("work", help="folder of run.sh's logs")
+    parser.add_argument("markdown", help="BENCHMARKS.md: the table goes between its hard:begin/end markers")
+    parser.add_argument("plot", help="the speed-against-error plot (PNG) written")
+    args = parser.parse_args()
+    main(args.work, args.markdown, args.plot)

@@ -16,7 +16,7 @@ local written by in.overlap (columns: atom i, atom j or -k for the k-th wall, ga
 
     overlaps.py CONTACTS_DUMP [r]      (r: rounding radius, the unit of the printout; 0.05)
 """
-import sys
+import argparse
 
 import numpy as np
 
@@ -39,6 +39,9 @@ def main(path, r=0.05):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) not in (2, 3):
-        sys.exit(__doc__)
-    main(sys.argv[1], *(float(a) for a in sys.argv[2:]))
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('contacts_dump', help="in.overlap's dump local (atom i, atom j or -k, gap)")
+    parser.add_argument('r', nargs='?', type=float, default=0.05,
+                        help='rounding radius, the unit of the printout (default 0.05)')
+    args = parser.parse_args()
+    main(args.contacts_dump, args.r)

@@ -19,7 +19,7 @@ which is constant if the solver's cost is linear in the size of the pile.
 
     fit.py LOG [LOG ...]
 """
-import sys
+import argparse
 
 import numpy as np
 
@@ -51,6 +51,6 @@ def main(paths):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) < 2:
-        sys.exit(__doc__)
-    main(sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('logs', nargs='+', metavar='LOG', help='log of in.bed_run (per-step thermo)')
+    main(parser.parse_args().logs)
