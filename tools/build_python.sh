@@ -34,9 +34,9 @@ fi
 cmake --build "$build" --target lammps -j "$jobs"
 
 tree=$(sed -n 's/^LAMMPS_SOURCE_DIR:PATH=//p' "$build/CMakeCache.txt")
-library=$(find "$build/lammps" -maxdepth 1 -name 'liblammps.so*' -type f | sort | head -1)
+library=$(find "$build" -maxdepth 2 -name 'liblammps.so*' -type f | sort | head -1)
 if [ -z "$library" ] || [ ! -d "$tree/python/lammps" ]; then
-  echo "build_python.sh: no liblammps.so in $build/lammps or no python/lammps in '$tree'" >&2
+  echo "build_python.sh: no liblammps.so in $build or no python/lammps in '$tree'" >&2
   exit 1
 fi
 module=$build/python/lammps
