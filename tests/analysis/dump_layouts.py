@@ -30,13 +30,14 @@ import sys
 
 import numpy as np
 
-from nscd_analysis import layouts
+from nscd_analysis import layouts, stress
 from nscd_analysis.dumps import indexed_entry, read_dump
 
 # the deck's numbers (tests/analysis/in.dump_layouts)
 GRAVITY = 1.0
 K_ELO, REST_LENGTH = 100.0, 0.196                   # bond_coeff after create_wire
 WIRE_RADIUS, MU_S, MU_D = 0.02, 0.5, 0.4            # fix wire
+S0 = 2.0                                            # compute nscd/crush/atom
 FLOOR = -1                                          # the first (only) boundary fix
 
 failures = []
@@ -129,6 +130,31 @@ def check_fabric(s, pairs):
             close(s.column(name, L)[k], expected[a, b], f"fabric atom {atom}: {name} = mean n n of its pairs")
 
 
+def check_stress_and_crush(s, atoms, points, pairs):
+    """compute nscd/stress/atom: sigma_i V_i = sum over i's points of sym(f (x) (x_c - x_i)),
+    V_i = mass (density 1); compute nscd/crush/atom: F = the largest total normal force of i's
+    pairs (floor included), d = (6 V / pi)^(1/3), sigma = F / d^2, index = sigma / S0."""
+    P, Q = layouts.CONTACT_POINTS, layouts.CONTACT_PAIRS
+    pid_i, pid_j = points.column("id_i", P).astype(int), points.column("id_j", P).astype(int)
+    p, f = points.vectors(("px", "py", "pz"), P), points.vectors(("fx", "fy", "fz"), P)
+    qid_i, qid_j, qfn = pairs.column("id_i", Q).astype(int), pairs.column("id_j", Q).astype(int), pairs.column("fn", Q)
+    for k, atom in enumerate(s.column("id").astype(int)):
+        x, volume = atoms[atom]["x"], atoms[atom]["mass"]
+        moment = np.zeros((3, 3))
+        for c in np.flatnonzero((pid_i == atom) | (pid_j == atom)):
+            on_me = f[c] if pid_i[c] == atom else -f[c]
+            moment += np.outer(on_me, p[c] - x)
+        sigma = 0.5 * (moment + moment.T) / volume
+        for name, (a, b) in zip(stress.STRESS_COMPONENTS, ((0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2))):
+            close(stress.compute_column(s, name, layouts.STRESS, "sig")[k], sigma[a, b],
+                  f"stress atom {atom}: {name} = Love-Weber sum of its points / V")
+        force = qfn[(qid_i == atom) | (qid_j == atom)].max()
+        d = (6 * volume / np.pi) ** (1 / 3)
+        got = {name: stress.compute_column(s, name, layouts.CRUSH, "crush")[k] for name in layouts.CRUSH}
+        close([got["fmax"], got["d"], got["sigma"], got["index"]], [force, d, force / d ** 2, force / d ** 2 / S0],
+              f"crush atom {atom}: fmax d sigma index")
+
+
 def check_wire_elements(s, atoms):
     L = layouts.WIRE_ELEMENTS
     col = lambda n: s.column(n, L)
@@ -179,8 +205,10 @@ def main():
     deck = src / "tests" / "analysis" / "in.dump_layouts"
     subprocess.run([lmp, "-in", str(deck), "-var", "dir", str(deck.parent), "-log", "log.lammps", "-screen", "none"],
                    cwd=work, check=True)
-    snap = {name: read_dump(work / f"{name}.5.dump")[0] for name in ("atoms", "points", "pairs", "wire", "wcontacts")}
-    for name, compute_id, layout in (("atoms", "fab", layouts.FABRIC), ("points", "pts", layouts.CONTACT_POINTS),
+    snap = {name: read_dump(work / f"{name}.5.dump")[0]
+            for name in ("atoms", "stress", "points", "pairs", "wire", "wcontacts")}
+    for name, compute_id, layout in (("atoms", "fab", layouts.FABRIC), ("stress", "sig", layouts.STRESS),
+                                     ("stress", "crush", layouts.CRUSH), ("points", "pts", layouts.CONTACT_POINTS),
                                      ("pairs", "pairs", layouts.CONTACT_PAIRS), ("wire", "el", layouts.WIRE_ELEMENTS),
                                      ("wcontacts", "wc", layouts.WIRE_CONTACTS)):
         header_matches(snap[name], compute_id, layout, name)
@@ -190,12 +218,13 @@ def main():
     check_points(snap["points"], atoms)
     check_pairs(snap["pairs"], atoms, snap["points"])
     check_fabric(balls, snap["pairs"])
+    check_stress_and_crush(snap["stress"], atoms, snap["points"], snap["pairs"])
     check_wire_elements(snap["wire"], atoms)
     check_wire_contacts(snap["wcontacts"], atoms)
     for line in failures:
         print("FAIL", line)
-    print(f"{len(failures)} failed checks; layouts of fabric/atom, nscd/contacts (points, pairs), wire/local, "
-          f"wire/contacts against {work}")
+    print(f"{len(failures)} failed checks; layouts of fabric/atom, nscd/stress/atom, nscd/crush/atom, "
+          f"nscd/contacts (points, pairs), wire/local, wire/contacts against {work}")
     return 1 if failures else 0
 
 

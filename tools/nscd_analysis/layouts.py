@@ -39,3 +39,9 @@ WIRE_CONTACTS = {name: k + 1 for k, name in enumerate(
     "id1 id2 other kind px py pz nx ny nz fn ftx fty ftz overlap status".split())}
 
 WIRE_GRAIN, WIRE_WIRE, WIRE_BOUNDARY = 1, 2, 3
+
+# compute nscd/stress/atom (per-atom array), tension positive
+STRESS = {name: k + 1 for k, name in enumerate("sxx syy szz sxy sxz syz".split())}
+
+# compute nscd/crush/atom (per-atom array): largest contact force, size, F/d^2, index
+CRUSH = {name: k + 1 for k, name in enumerate("fmax d sigma index".split())}
