@@ -74,7 +74,14 @@ add_subdirectory(${NSCD_LAMMPS_TREE}/cmake ${CMAKE_BINARY_DIR}/lammps)
 
 target_sources(lammps PRIVATE ${NSCD_PACKAGE_SOURCES})
 target_include_directories(lammps PRIVATE ${PROJECT_SOURCE_DIR}/src)
-target_link_libraries(lammps PUBLIC nscd_core)
+if(BUILD_SHARED_LIBS)
+  # liblammps.so (tools/build_python.sh) holds nscd_core (static, position-independent)
+  # inside it: linked privately, it stays out of the lammps target LAMMPS exports for
+  # installation.
+  target_link_libraries(lammps PRIVATE nscd_core)
+else()
+  target_link_libraries(lammps PUBLIC nscd_core)
+endif()
 set_target_properties(lammps PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON)
 set_target_properties(lmp PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
 

@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Sphinx configuration of the package's documentation (doc/*.md, Markdown through MyST).
 # Built by the CTest test docs.sphinx with warnings as errors:
 #   /usr/bin/python3 -m sphinx -W --keep-going -b html doc build/doc-html

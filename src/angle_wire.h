@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* angle_style wire: the rotational spring at a wire node, moment M = k_rot * nu with
    nu = pi - theta (theta = LAMMPS' angle, so nu = 0 for a straight wire), energy
    k_rot nu^2 / 2 (lib/wire/elastic_forces.h). k_rot = EI / l for element length l.

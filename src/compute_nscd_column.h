@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* compute nscd/column: measures of a granular column around a vertical axis: its height
    from the true grain surfaces and the fraction of grains it retains. See
    doc/compute_nscd_column.md. */

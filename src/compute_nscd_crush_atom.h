@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* compute nscd/crush/atom: per grain, how close its contact forces bring it to crushing: the
    largest contact force F on it, its volume-equivalent diameter d, the characteristic tensile
    stress F / d^2 and that over a size-dependent strength. See doc/compute_nscd_crush_atom.md. */

@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* compute nscd/stress/atom: per grain, the Love-Weber stress of its contact forces,
    sigma_i = (1/V_i) sum_c sym(f_c (x) (x_c - x_i)), from fix nscd's last solve (grains,
    walls, plate) and fix wire's last step (wire-grain contacts). See

@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* fix nscd: time integration of rigid spheropolyhedra by Non-Smooth Contact Dynamics
    (Moreau-Jean theta-method, nonlinear Gauss-Seidel with the Signorini condition and exact
    Coulomb friction). Contacts come from pair_style nscd and from boundary fixes

@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* fix nscd/plate: a horizontal loading plate above the grains: a rigid body with its own
    mass that moves only along z (no rotation), pushed down by a load that grows linearly in
    time (or stays constant). Takes part in fix nscd's contact problem. See

@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* fix wire: integrates elastic wire nodes (atoms of shape 0 joined by bond_style wire and
    angle_style wire) with the Gear-5 predictor-corrector on a subcycle of n substeps per
    LAMMPS step (lib/wire/subcycle.h), with soft wire-wire, wire-grain and wire-boundary

@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 /* What fix nscd and fix wire need from a boundary (a wall, the loading plate) of the contact
    problem. A fix that puts one there derives from NSCDBoundaryFix (nscd_boundary_fix.h) and
    hands out an object with this interface, which it owns. */

@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # CPU seconds (user+sys) to compile the LAMMPS core files that include style_*.h, ccache off.
 # Measures what the slim style headers save (doc/README: LAMMPS versions).
 # usage: tools/core_compile_time.sh BUILD_DIR   (a build configured with

@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Fetch a LAMMPS source tree from Debian's `lammps` source package into a cache directory
 # outside the tracked files, and print the path of the unpacked tree.
 #

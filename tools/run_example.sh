@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Builds LAMMPS with the package (installing what is missing) and runs an example.
 #   tools/run_example.sh                    the papers' column, small (see below): ~6 min CPU
 #   tools/run_example.sh column [ARGS...]   the same; ARGS (e.g. -var layers 25) replace the small size

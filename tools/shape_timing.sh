@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Times the shape-library reader on large inputs (doc/robustness.md, "Speed"):
 #   one shape of 10^5 random points, one of 10^6 points, 10^5 one-vertex shapes.
 #   tools/shape_timing.sh [BUILD_DIR]   (default build-lib; lib/ must be built there)

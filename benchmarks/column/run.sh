@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # The papers' size: a wire column of 25 layers (radius 3 ~ 6 largest grain radii; 2 lattice
 # cells = 50 grains per layer, ~1250 grains, 25 double loops) through every phase of
 # examples/column/in.column on NP ranks, then the per-phase table (steps, wall time, ms per

@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // Pairs per second of the narrow phase for typical random grains (hull of 12-24 random
 // points on an ellipsoid, fixed seed), in the poses a simulation hands it:
 //   touching       dilated surfaces overlapping or apart by up to 1% of the size

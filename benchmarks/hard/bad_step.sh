@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # One expensive step of a column under the 1000x plate, solved alone with each method and
 # setting: seed 34's 20-layer column of growth.sh (at rest, ramp 0) lets go of its plate
 # around step 1613, where every method needs thousands of sweeps (doc/BENCHMARKS.md, growth

@@ -1,14 +1,26 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Reads growth.sh's logs and prints, per method, the sweeps per step of the 20- and
 40-layer columns of every seed and their ratio (issue 14: 40 over 20 layers <= 1.5), as a
 markdown table.
 
     /usr/bin/python3 growth.py WORK_DIR RAMP
 """
+import argparse
 import glob
 import os
 import re
 import statistics
-import sys
 
 from report import read_log, setting
 
@@ -62,4 +74,8 @@ def main(work, ramp):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "0")
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("work", help="folder of growth.sh's logs")
+    parser.add_argument("ramp", nargs="?", default="0", help="the RAMP of the runs, as in their log names (default 0)")
+    args = parser.parse_args()
+    main(args.work, args.ramp)

@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Growth of the sweeps per step from 20 to 40 grain layers under the 1000x plate (issue 14:
 # <= 1.5x), over several random columns: each seed builds its own settled 20- and 40-layer
 # columns (in.column_settle, until the plate sinks slower than 1e-3), then every method runs

@@ -1,9 +1,22 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Reads the logs of benchmarks/hard/run.sh and writes the hard-case table into
 doc/BENCHMARKS.md (between the markers <!-- hard:begin --> and <!-- hard:end -->, the rest
 of the file is kept) and the speed-against-error plot.
 
     /usr/bin/python3 report.py WORK_DIR BENCHMARKS.md PLOT.png
 """
+import argparse
 import glob
 import os
 import platform
@@ -197,4 +210,9 @@ def main(work, markdown, plot):
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:4])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("work", help="folder of run.sh's logs")
+    parser.add_argument("markdown", help="BENCHMARKS.md: the table goes between its hard:begin/end markers")
+    parser.add_argument("plot", help="the speed-against-error plot (PNG) written")
+    args = parser.parse_args()
+    main(args.work, args.markdown, args.plot)

@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Hard-case benchmark of fix nscd's solver, speed against error: every scene (in.tower20,
 # in.pyramid10, in.column with 20 and 40 layers under a plate of mass ratio 1000, in.pile with
 # mu = 1) with plain Gauss-Seidel and the accelerated methods at several tolerances, then the

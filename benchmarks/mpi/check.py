@@ -1,4 +1,16 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Tables (markdown) of the runs of benchmarks/mpi/run.sh; exits 1 if a tolerance fails.
 
   check.py pour REF DIR...      piles poured by in.pour, each compared with REF (1 rank)
@@ -7,6 +19,7 @@
 Each DIR is a run folder (log.lammps, grains.txt, contacts.*.txt); its name after the last
 '.' in "pour.NAME" is the row label. Plain python3, no numpy.
 """
+import argparse
 import glob
 import math
 import os
@@ -180,8 +193,15 @@ def continued(runs):
 
 
 if __name__ == "__main__":
-    mode, dirs = sys.argv[1], sys.argv[2:]
-    failed = pour(dirs[0], dirs[1:]) if mode == "pour" else continued(dirs)
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    modes = parser.add_subparsers(dest="mode", required=True)
+    p = modes.add_parser("pour", help="piles poured by in.pour, each compared with REF (1 rank)")
+    p.add_argument("ref", help="run folder of the 1-rank pour")
+    p.add_argument("dirs", nargs="+", metavar="DIR", help="run folders compared with REF")
+    p = modes.add_parser("continue", help="the same settled pile continued by in.continue")
+    p.add_argument("dirs", nargs="+", metavar="DIR", help="run folders (the first: 1 rank)")
+    args = parser.parse_args()
+    failed = pour(args.ref, args.dirs) if args.mode == "pour" else continued(args.dirs)
     if failed:
         print("\nFAILED: a run differs from the 1-rank run by more than a tolerance")
     sys.exit(1 if failed else 0)

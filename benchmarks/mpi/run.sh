@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # fix nscd across MPI ranks. Pours and settles the same grains on 1, 2 and 4 ranks (in.pour)
 # and compares the piles at rest with the 1-rank pile (check.py; extra 1-rank pours with
 # other initial velocities show how much two pours differ anyway). Then continues the

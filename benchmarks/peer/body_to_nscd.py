@@ -1,4 +1,16 @@
 #!/usr/bin/python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """The last snapshot of a BODY run (dump of in.body) as a data file of atom_style
 spheropolyhedron, so that in.overlap measures its overlaps with our contact geometry.
 
@@ -14,6 +26,7 @@ With SHAPES (our shape library) and BODY_VERTICES (dump local of compute body/lo
 at the last step), checks that our grains, so placed, have their vertices where BODY has
 them, and prints the largest distance.
 """
+import argparse
 import sys
 
 import numpy as np
@@ -136,6 +149,13 @@ def main(peer_data, dump, out_data, shapes=None, vertices=None):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) not in (4, 6):
-        sys.exit(__doc__)
-    main(*sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('peer_data', help='our data file of the initial state (in.setup)')
+    parser.add_argument('body_dump', help="in.body's dump (id x y z qw qi qj qk), first and last step")
+    parser.add_argument('out_data', help='the data file written')
+    parser.add_argument('shapes', nargs='?', help='our shape library (with BODY_VERTICES: check the vertices)')
+    parser.add_argument('body_vertices', nargs='?', help='dump local of compute body/local id 1 2 3, last step')
+    args = parser.parse_args()
+    if (args.shapes is None) != (args.body_vertices is None):
+        parser.error('SHAPES and BODY_VERTICES go together')
+    main(args.peer_data, args.body_dump, args.out_data, args.shapes, args.body_vertices)

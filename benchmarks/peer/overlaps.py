@@ -1,10 +1,22 @@
 #!/usr/bin/python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Largest overlap between grains and with the walls, from the last snapshot of the dump
 local written by in.overlap (columns: atom i, atom j or -k for the k-th wall, gap).
 
     overlaps.py CONTACTS_DUMP [r]      (r: rounding radius, the unit of the printout; 0.05)
 """
-import sys
+import argparse
 
 import numpy as np
 
@@ -27,6 +39,9 @@ def main(path, r=0.05):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) not in (2, 3):
-        sys.exit(__doc__)
-    main(sys.argv[1], *(float(a) for a in sys.argv[2:]))
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('contacts_dump', help="in.overlap's dump local (atom i, atom j or -k, gap)")
+    parser.add_argument('r', nargs='?', type=float, default=0.05,
+                        help='rounding radius, the unit of the printout (default 0.05)')
+    args = parser.parse_args()
+    main(args.contacts_dump, args.r)

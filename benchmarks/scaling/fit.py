@@ -1,4 +1,16 @@
 #!/usr/bin/python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Cost of a step of fix nscd split into a per-step part and a per-sweep part, from the
 per-step thermo lines of in.bed_run (step, sweeps, residual, overlap, contacts, floor force,
 weight, cpu): a least-squares fit t_step = a + b * sweeps over all steps of both runs (the
@@ -7,7 +19,7 @@ which is constant if the solver's cost is linear in the size of the pile.
 
     fit.py LOG [LOG ...]
 """
-import sys
+import argparse
 
 import numpy as np
 
@@ -39,6 +51,6 @@ def main(paths):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) < 2:
-        sys.exit(__doc__)
-    main(sys.argv[1:])
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('logs', nargs='+', metavar='LOG', help='log of in.bed_run (per-step thermo)')
+    main(parser.parse_args().logs)

@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Scaling of fix nscd (issue 14, item 6): a settled periodic bed of 1008 random grains
 # (in.bed_settle, built once per WORK), replicated to ~10^4 and ~10^5 grains (in.bed_run), run
 # on 1, 2 and 4 MPI ranks. Prints one line per run (also to WORK/summary.txt): grains, ranks,

@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Speed of fix wire on a column of 340 grains with 2360 wire nodes in 4 double loops
 # (in.settle, in.column), resting and sliding, on 1 and 2 MPI ranks: fix wire's own timing
 # (ns per node per substep, its split, bytes sent per substep) next to the error measures

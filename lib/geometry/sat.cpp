@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // Separating-axis search over face normals and edge-edge cross products. For polytopes
 // the minimum-penetration direction is always one of these axes (a face normal of the
 // Minkowski difference), so the answer is exact for overlapping cores.

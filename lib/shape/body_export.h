@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // A grain as LAMMPS' BODY package sees it: one entry of the Bodies section of a data file
 // for `atom_style body rounded/polyhedron`, so that `pair_style body/rounded/polyhedron`
 // can run the very hulls of our shape library (the peer comparison of benchmarks/peer).

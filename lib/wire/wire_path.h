@@ -1,3 +1,17 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // Where a wire is laid: its centre line (a loop or helix around an axis, a straight line, a
 // polyline) cut into nodes a given straight distance apart. Used by the `create_wire`
 // command; pure geometry, no LAMMPS. See doc/create_wire.md.

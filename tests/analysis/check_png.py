@@ -1,4 +1,16 @@
 #!/usr/bin/python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """check_png.py MIN_FRACTION FILE...: each PNG must be under 300 KB and have more than
 MIN_FRACTION of its pixels away from the white background, some of them in colour (a
 colour-mapped wire or network, not only grey grains). Exit 1 naming the first that fails."""

@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # tools/column_figures.sh on a deck that is not examples/column (doc/analysis.md): lmp runs
 # tests/analysis/in.figures_deck (files pile.KIND.<step>.*, its log split in log.pile.1 and
 # log.pile.2, thermo columns step v_stage v_load f_nscd[1] only, no wire, no silo), then the

@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Renders a small scene to PNG the way a user makes the papers' Fig. 2 (doc/analysis.md):
 # lmp runs tests/analysis/in.render (dump grains/vtk, compute nscd/contacts pairs,
 # compute wire/local, node positions), tools/nscd-analysis turns the dumps into .vtp files,

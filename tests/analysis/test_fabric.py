@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Fabric tensors in the column's cylindrical frame: known principal directions give their
 signed angle, isotropic fabrics give a zero mean angle (tools/nscd_analysis/fabric.py)."""
 
@@ -8,7 +20,7 @@ import unittest
 import numpy as np
 
 import synthetic
-from nscd_analysis import cli, cylinder, dumps, fabric
+from nscd_analysis import cli, cylinder, dumps, fabric, fields
 
 
 class SignConvention(unittest.TestCase):
@@ -72,7 +84,7 @@ class IsotropicAndDirectedFabrics(unittest.TestCase):
         snap = dumps.read_dump(path)[0]
         r_got, _, blocks, angle = fabric.per_grain(snap, axis=(0.0, 0.0))
         edges = np.linspace(0, 5, 6)
-        count, mean, sem, tensor_angle = cli.angle_profile(r_got, blocks, angle, edges)
+        count, mean, sem, tensor_angle = fields.angle_profile(r_got, blocks, angle, edges)
         self.assertEqual(count.sum(), n)
         for b in range(5):
             self.assertLess(abs(mean[b]), 3.5 * sem[b], f"bin {b}: {mean[b]} +- {sem[b]}")

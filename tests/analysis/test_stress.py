@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Stress and crushing fields around the column axis (tools/nscd_analysis/stress.py and the
 stress-field, stress-angle, stress-profile and crush-profile subcommands) on synthetic dumps
 with known answers: uniaxial compressions along known r-z directions, a sigma_zz that grows
@@ -10,7 +22,7 @@ import unittest
 import numpy as np
 
 import synthetic
-from nscd_analysis import cli, cylinder, dumps, stress, wire_breaks
+from nscd_analysis import cli, cylinder, dumps, fabric, stress, wire_breaks
 
 HEADER = ["id", "x", "y", "z"] + synthetic.indexed("sig", 6) + synthetic.indexed("crush", 4)
 
@@ -58,7 +70,7 @@ class Fields(unittest.TestCase):
         got_r, _, blocks, angle = stress.per_grain(dumps.read_dump(path)[0], axis, compute_id="sig")
         np.testing.assert_allclose(got_r, r, atol=1e-9)
         np.testing.assert_allclose(angle, angles, atol=1e-9)
-        lam_max, _, lam_min, _ = cli.fabric.principal_rz(blocks)
+        lam_max, _, lam_min, _ = fabric.principal_rz(blocks)
         np.testing.assert_allclose(lam_max, 2.5, atol=1e-9)    # compression positive: p + lateral
         np.testing.assert_allclose(lam_min, 0.5, atol=1e-9)
 

@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # compute wire/contacts through dump local into tools/nscd-analysis wire-contacts
 # (doc/analysis.md): lmp runs tests/analysis/in.wire_contacts on NP ranks (a wire resting
 # on a floor), and the tool, reading the dump, must find one row per node (31, each once

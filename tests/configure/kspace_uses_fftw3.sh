@@ -1,4 +1,16 @@
 #!/usr/bin/env bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Configures the project once more, with LAMMPS' KSPACE package on, in a scratch build tree
 # and checks that LAMMPS takes FFTW3 as its FFT library (not its KISS fallback).
 #   kspace_uses_fftw3.sh SOURCE_DIR LAMMPS_TREE SCRATCH_DIR

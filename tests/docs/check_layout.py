@@ -1,4 +1,16 @@
 #!/usr/bin/env python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Every command page of doc/ (the pages of the first table of contents in doc/index.md,
 "Commands") has the sections of a LAMMPS reference page: Syntax, Examples, Description,
 Restart, Restrictions, Related commands, Default (as '## ' headings), in that order (other

@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // Prints the serialised form (ShapeLibrary::serialize) of a shape library file: makes the
 // seed corpus of the deserialize fuzz target from text libraries (tools/fuzz.sh).
 #include "shape/shape_library.h"

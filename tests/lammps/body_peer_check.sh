@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # benchmarks/peer's chain on spinning grains: our 216 grains (in.setup) given an angular
 # velocity, written for LAMMPS' BODY package by nscd_to_body, read and moved by BODY for 100
 # steps of free fall, and turned back by body_to_nscd.py, which must put every vertex of our

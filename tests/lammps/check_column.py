@@ -1,4 +1,16 @@
 #!/usr/bin/python3
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Checks of the 2-layer column smoke test (tests/lammps/run_example_check.sh column):
 the logs of examples/column/in.column with the wire (WIRE_LOG) and without (BARE_LOG).
 

@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // Newton's impact law wherever in a step an impact falls (doc/nscd_solver.md, "Which
 // contacts act: the Signorini rule"), through fix nscd, pair_style nscd's speculative
 // contacts and fix nscd/wall, at the default theta = 1: grains head-on (unit cubes face to

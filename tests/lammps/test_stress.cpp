@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // compute nscd/stress/atom and nscd/crush/atom against closed forms
 // (doc/compute_nscd_stress_atom.md, doc/compute_nscd_crush_atom.md): a rounded
 // cube pressed between floor and plate carries sigma_zz V = -(plate force + m g / 2) x its

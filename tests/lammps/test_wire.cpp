@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // bond_style wire, angle_style wire, fix wire and compute wire/local against closed forms:
 // a pulled wire, a cantilever, a hanging chain, a wire resting on a fixed grain, the
 // stability-limit error and restart continuation, a wire-bound pyramid of balls. Units are

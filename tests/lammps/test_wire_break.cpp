@@ -1,3 +1,17 @@
+/* ----------------------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
 // fix wire's option strength (doc/fix_wire.md, "Breaking"): a wire clamped at one end and
 // pulled at the other by a slowly growing force carries that force as its tension; an element
 // breaks in the step its tension reaches its strength, leaves the bond and angle topology on

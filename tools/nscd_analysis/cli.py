@@ -1,5 +1,19 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Command line: one subcommand per figure (doc/analysis.md). Each writes PREFIX.png and
-PREFIX.csv (the numbers behind the picture) unless said otherwise."""
+PREFIX.csv (the numbers behind the picture) unless said otherwise. A command reads its
+input, has the analysis modules compute the numbers, writes them as CSV, and hands them
+to plots.py for the picture."""
 
 import argparse
 import csv
@@ -8,25 +22,9 @@ import sys
 
 import numpy as np
 
-from . import cylinder, fabric, forces, logs, phases, stress, vtk, wire_breaks, wire_contacts, wire_loops
+from . import cylinder, fabric, fields, forces, logs, phases, plots, stress, vtk, wire_breaks, wire_contacts, wire_loops
 from .dumps import DumpError, read_dumps
 from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
-
-DPI = 100
-
-
-def _pyplot():
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    return plt
-
-
-def _save(fig, prefix):
-    os.makedirs(os.path.dirname(os.path.abspath(prefix)), exist_ok=True)
-    fig.savefig(prefix + ".png", dpi=DPI)
-    _pyplot().close(fig)
-    return prefix + ".png"
 
 
 def _write_csv(prefix, header, rows, comments=()):
@@ -61,16 +59,9 @@ def _grain_axis(args, snapshot):
     return cylinder.axis_from_centre_of_mass(pos, masses)
 
 
-def _r_axis(ax, args, scaled):
-    """Label the r axis; with --R, mark R on it. scaled: the plotted r is already r / R."""
-    radius = getattr(args, "R", None)
-    if radius is None:
-        ax.set_xlabel("r")
-        return
-    ax.axvline(1.0 if scaled else radius, color="0.4", ls="--", lw=0.8)
-    ax.annotate("R", xy=(1.0 if scaled else radius, 1.0), xycoords=("data", "axes fraction"),
-                xytext=(2, -10), textcoords="offset points", color="0.3")
-    ax.set_xlabel(f"r / R   (R = {radius:g})" if scaled else f"r   (R = {radius:g})")
+def _radius(args):
+    """The column's radius given with --R, or None."""
+    return getattr(args, "R", None)
 
 
 def _r_scale(args):
@@ -104,80 +95,17 @@ def cmd_cylavg(args):
     r_edges = _r_edges(args, r)
     z_edges = _z_edges(args, z)
     count, mean = cylinder.binned_mean_2d(v, r, z, r_edges, z_edges)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(5.0, 5.0))
-    mesh = ax.pcolormesh(r_edges, z_edges, np.ma.masked_invalid(mean.T), shading="flat", cmap="viridis")
-    fig.colorbar(mesh, ax=ax, label=args.value)
-    _r_axis(ax, args, scaled=False)
-    ax.set_ylabel("z")
-    ax.set_title(f"{args.value} averaged around the axis ({len(snaps)} snapshot(s))")
-    fig.tight_layout()
+    fig = plots.cylavg_map(r_edges, z_edges, mean, args.value, len(snaps), _radius(args))
     rows = [(r_edges[i], r_edges[i + 1], z_edges[j], z_edges[j + 1], count[i, j], mean[i, j])
             for i in range(len(r_edges) - 1) for j in range(len(z_edges) - 1)]
-    print(_save(fig, args.out), _write_csv(args.out, ["r_lo", "r_hi", "z_lo", "z_hi", "count", "mean"], rows))
+    print(plots.save(fig, args.out), _write_csv(args.out, ["r_lo", "r_hi", "z_lo", "z_hi", "count", "mean"], rows))
 
 
 # --- fabric-field: the papers' Fig. 3 ---------------------------------------------------
 
 def _pooled_fabric(args, patterns, steps, last):
-    r_all, z_all, blocks_all, angle_all = [], [], [], []
-    snaps = read_dumps(patterns, steps, last)
-    for s in snaps:
-        r, z, blocks, angle = fabric.per_grain(s, _grain_axis(args, s), _zrange(args))
-        r_all.append(r), z_all.append(z), blocks_all.append(blocks), angle_all.append(angle)
-    return (np.concatenate(r_all), np.concatenate(z_all), np.concatenate(blocks_all),
-            np.concatenate(angle_all), len(snaps))
-
-
-def _principal_field(r, z, blocks, r_edges, z_edges):
-    """Per non-empty (r, z) bin: the mean r-z block, its principal values and directions and
-    the signed angle of the largest (rows for the CSV, segments for _draw_field)."""
-    count, mean = cylinder.binned_mean_2d(blocks.reshape(len(blocks), 4), r, z, r_edges, z_edges)
-    rc, zc = cylinder.centres(r_edges), cylinder.centres(z_edges)
-    rows, segments = [], []
-    for i in range(len(rc)):
-        for j in range(len(zc)):
-            if count[i, j] == 0:
-                continue
-            block = mean[i, j].reshape(2, 2)
-            lam_max, v_max, lam_min, v_min = fabric.principal_rz(block[None])
-            angle = float(fabric.signed_angle(v_max)[0])
-            rows.append((rc[i], zc[j], count[i, j], block[0, 0], block[0, 1], block[1, 1], lam_max[0],
-                         v_max[0, 0], v_max[0, 1], lam_min[0], v_min[0, 0], v_min[0, 1], angle))
-            segments.append((rc[i], zc[j], lam_max[0], v_max[0], lam_min[0], v_min[0], angle))
-    return rows, segments
-
-
-def _draw_field(fig, ax, args, segments, r_edges, z_edges, title, what="largest direction", limit=None):
-    """Bars along the principal directions of each bin (length: the principal value; the
-    largest coloured by its signed angle, on -limit..limit: default the largest |angle|)."""
-    from matplotlib.collections import LineCollection
-    cell = min(np.diff(r_edges).min(), np.diff(z_edges).min())
-    scale = 0.9 * cell / max([abs(s[2]) for s in segments] + [1e-300])
-    if limit is None:
-        limit = _angle_limit(segments)
-
-    def bars(length_of, direction_of):
-        return [[(x - 0.5 * scale * length_of(s) * direction_of(s)[0], y - 0.5 * scale * length_of(s) * direction_of(s)[1]),
-                 (x + 0.5 * scale * length_of(s) * direction_of(s)[0], y + 0.5 * scale * length_of(s) * direction_of(s)[1])]
-                for s in segments for x, y in [s[:2]]]
-    big = bars(lambda s: abs(s[2]), lambda s: s[3])
-    small = bars(lambda s: abs(s[4]), lambda s: s[5])
-    ax.add_collection(LineCollection(small, colors="0.35", linewidths=0.8))
-    lc = LineCollection(big, array=np.array([s[6] for s in segments]), cmap="coolwarm", linewidths=3.0)
-    lc.set_clim(-limit, limit)
-    ax.add_collection(lc)
-    fig.colorbar(lc, ax=ax, label=f"signed angle of the {what} with z (rad)")
-    ax.set_xlim(r_edges[0], r_edges[-1])
-    ax.set_ylim(z_edges[0], z_edges[-1])
-    ax.set_aspect("equal")
-    _r_axis(ax, args, scaled=False)
-    ax.set_ylabel("z")
-    ax.set_title(title, fontsize=9)
-
-
-def _angle_limit(segments):
-    return max([abs(s[6]) for s in segments] + [1e-3])
+    return fields.pooled(lambda s: fabric.per_grain(s, _grain_axis(args, s), _zrange(args)),
+                         read_dumps(patterns, steps, last))
 
 
 FIELD_HEADER = ["r", "z", "grains", "F_rr", "F_rz", "F_zz", "lambda_max", "vmax_r", "vmax_z", "lambda_min",
@@ -188,13 +116,10 @@ def cmd_fabric_field(args):
     r, z, blocks, _, nsnap = _pooled_fabric(args, args.dump, args.steps, args.last)
     r_edges = _r_edges(args, r)
     z_edges = _z_edges(args, z)
-    rows, segments = _principal_field(r, z, blocks, r_edges, z_edges)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(5.0, 6.0))
-    _draw_field(fig, ax, args, segments, r_edges, z_edges,
-                f"fabric in the r-z plane ({len(r)} grains, {nsnap} snapshot(s))")
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, FIELD_HEADER, rows, [
+    rows, segments = fields.principal_field(r, z, blocks, r_edges, z_edges)
+    title = f"fabric in the r-z plane ({len(r)} grains, {nsnap} snapshot(s))"
+    fig = plots.principal_fields([("fabric", title, segments)], r_edges, z_edges, _radius(args))
+    print(plots.save(fig, args.out), _write_csv(args.out, FIELD_HEADER, rows, [
         "mean r-z block of the grains' fabric tensors in their cylindrical frame per (r, z) bin;",
         "angle: of the largest principal direction with z, positive = leaning outward going up (inward going down)"]))
 
@@ -211,19 +136,6 @@ def _parse_runs(runs):
     return out
 
 
-def angle_profile(r, blocks, angle, r_edges):
-    """Per r bin: grains, mean of the per-grain angles, its standard error, and the angle of
-    the bin's mean r-z block."""
-    ok = ~np.isnan(angle)
-    count, mean, sem = cylinder.binned_mean(angle[ok], r[ok], r_edges)
-    _, mean_block, _ = cylinder.binned_mean(blocks.reshape(len(blocks), 4), r, r_edges)
-    tensor_angle = np.full(len(count), np.nan)
-    for b in range(len(count)):
-        if not np.isnan(mean_block[b]).any():
-            tensor_angle[b] = fabric.signed_angle(fabric.principal_rz(mean_block[b].reshape(1, 2, 2))[1])[0]
-    return count, mean, sem, tensor_angle
-
-
 def _angle_plot(args, pooled, ylabel, what):
     """Mean signed angle vs r of each run's principal direction (fabric-angle, stress-angle):
     pooled(args, patterns, steps, last) gives (r, z, blocks, angle, snapshots); `what` names
@@ -231,26 +143,19 @@ def _angle_plot(args, pooled, ylabel, what):
     runs = [(label, pooled(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
     r_edges = _r_edges(args, np.concatenate([data[0] for _, data in runs]))
     rc = cylinder.centres(r_edges)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(6.0, 4.2))
-    rows, summary = [], []
+    rows, summary, curves = [], [], []
     for label, (r, _, blocks, angle, nsnap) in runs:
-        count, mean, sem, tensor_angle = angle_profile(r, blocks, angle, r_edges)
+        count, mean, sem, tensor_angle = fields.angle_profile(r, blocks, angle, r_edges)
         value = tensor_angle if args.method == "tensor" else mean
-        ax.errorbar(rc / _r_scale(args), value, yerr=None if args.method == "tensor" else sem, marker="o", ms=4,
-                    capsize=2, label=label)
+        curves.append((label, rc / _r_scale(args), value, None if args.method == "tensor" else sem))
         for b in range(len(rc)):
             rows.append((label, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b], tensor_angle[b]))
         summary.append(f"{label}: mean angle {what}over all grains {np.nanmean(angle):+.4f} rad "
                        f"({int(np.sum(~np.isnan(angle)))} grains, {nsnap} snapshot(s))")
-    ax.axhline(0.0, color="0.6", lw=0.8)
-    _r_axis(ax, args, scaled=True)
-    ax.set_ylabel(ylabel)
-    ax.set_title("mean over grains" if args.method == "grains" else "angle of the mean tensor", fontsize=9)
-    ax.legend()
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "mean_angle_rad",
-                                                       "sem_rad", "tensor_angle_rad"], rows, summary))
+    fig = plots.profiles(curves, _radius(args), ylabel, zero_line=True,
+                         title="mean over grains" if args.method == "grains" else "angle of the mean tensor")
+    print(plots.save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "mean_angle_rad",
+                                                            "sem_rad", "tensor_angle_rad"], rows, summary))
     for line in summary:
         print(line)
 
@@ -262,13 +167,8 @@ def cmd_fabric_angle(args):
 # --- stress fields: stress-field, stress-angle, stress-profile, crush-profile ------------
 
 def _pooled_stress(args, patterns, steps, last):
-    r_all, z_all, blocks_all, angle_all = [], [], [], []
-    snaps = read_dumps(patterns, steps, last)
-    for s in snaps:
-        r, z, blocks, angle = stress.per_grain(s, _grain_axis(args, s), _zrange(args), args.stress_id)
-        r_all.append(r), z_all.append(z), blocks_all.append(blocks), angle_all.append(angle)
-    return (np.concatenate(r_all), np.concatenate(z_all), np.concatenate(blocks_all),
-            np.concatenate(angle_all), len(snaps))
+    return fields.pooled(lambda s: stress.per_grain(s, _grain_axis(args, s), _zrange(args), args.stress_id),
+                         read_dumps(patterns, steps, last))
 
 
 def cmd_stress_field(args):
@@ -279,20 +179,14 @@ def cmd_stress_field(args):
         panels.append(("fabric", fr, fz, fblocks, fsnap))
     r_edges = _r_edges(args, np.concatenate([p[1] for p in panels]))
     z_edges = _z_edges(args, np.concatenate([p[2] for p in panels]))
-    plt = _pyplot()
-    fig, axes = plt.subplots(1, len(panels), figsize=(5.0 * len(panels), 6.0), squeeze=False)
-    rows, fields = [], []
+    rows, drawn = [], []
     for what, pr, pz, pblocks, psnap in panels:
-        field_rows, segments = _principal_field(pr, pz, pblocks, r_edges, z_edges)
+        field_rows, segments = fields.principal_field(pr, pz, pblocks, r_edges, z_edges)
         rows += [(what,) + row for row in field_rows]
-        fields.append((what, len(pr), psnap, segments))
-    limit = max(_angle_limit(segments) for _, _, _, segments in fields)    # one colour scale for both
-    for (what, grains, psnap, segments), ax in zip(fields, axes[0]):
-        major = "major (most compressive) stress" if what == "stress" else "largest fabric direction"
-        _draw_field(fig, ax, args, segments, r_edges, z_edges,
-                    f"{what} in the r-z plane ({grains} grains, {psnap} snapshot(s))", major, limit)
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["field"] + FIELD_HEADER, rows, [
+        drawn.append((what, f"{what} in the r-z plane ({len(pr)} grains, {psnap} snapshot(s))", segments))
+    fig = plots.principal_fields(drawn, r_edges, z_edges, _radius(args), lambda what: (
+        "major (most compressive) stress" if what == "stress" else "largest fabric direction"))
+    print(plots.save(fig, args.out), _write_csv(args.out, ["field"] + FIELD_HEADER, rows, [
         "per (r, z) bin the mean r-z block in the grains' cylindrical frames: stress rows hold -sigma "
         "(compression positive, compute nscd/stress/atom), fabric rows the fabric tensor;",
         "angle: of the largest principal direction (stress: the most compressive) with z, positive = "
@@ -324,22 +218,17 @@ def cmd_stress_profile(args):
     r_edges = _r_edges(args, np.concatenate([cylinder.Cylindrical(stress.positions(s), a).r
                                              for s, a in zip(snaps, axes_of)]))
     rc = cylinder.centres(r_edges)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(6.0, 4.2))
-    rows = []
+    rows, curves = [], []
     for s, axis, label in zip(snaps, axes_of, labels):
         count, mean, sem = stress.szz_profile(s, axis, r_edges, _zrange(args), args.stress_id)
-        ax.errorbar(rc / _r_scale(args), -mean, yerr=sem, marker="o", ms=4, capsize=2, label=label)
+        curves.append((label, rc / _r_scale(args), -mean, sem))
         for b in range(len(rc)):
             rows.append((label, s.timestep, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b]))
-    _r_axis(ax, args, scaled=True)
-    ax.set_ylabel("-sigma_zz, mean over grains (compression > 0)")
-    ax.legend()
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "grains", "mean_szz",
-                                                       "sem_szz"], rows,
-                                           ["sigma_zz of compute nscd/stress/atom (tension positive) over grains "
-                                            "with contacts"]))
+    fig = plots.profiles(curves, _radius(args), "-sigma_zz, mean over grains (compression > 0)")
+    print(plots.save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "grains",
+                                                            "mean_szz", "sem_szz"], rows,
+                                                ["sigma_zz of compute nscd/stress/atom (tension positive) over "
+                                                 "grains with contacts"]))
 
 
 def cmd_crush_profile(args):
@@ -350,29 +239,22 @@ def cmd_crush_profile(args):
         data.append((s, cylinder.Cylindrical(pos, _grain_axis(args, s)), flags))
     r_edges = _r_edges(args, np.concatenate([c.r for _, c, _ in data]))
     z_edges = _z_edges(args, np.concatenate([c.z for _, c, _ in data]))
-    plt = _pyplot()
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 4.0))
-    rows, summary = [], []
+    rows, summary, curves = [], [], {"r": [], "z": []}
     for (s, cyl, flags), label in zip(data, labels):
-        for coord, values, edges, ax in (("r", cyl.r, r_edges, left), ("z", cyl.z, z_edges, right)):
+        for coord, values, edges in (("r", cyl.r, r_edges), ("z", cyl.z, z_edges)):
             count, fraction, error = stress.fraction_profile(flags, values, edges)
             centre = cylinder.centres(edges)
-            x = centre / _r_scale(args) if coord == "r" else centre
-            ax.errorbar(x, fraction, yerr=error, marker="o", ms=4, capsize=2, label=label)
+            curves[coord].append((label, centre / _r_scale(args) if coord == "r" else centre, fraction, error))
             for b in range(len(centre)):
                 rows.append((label, s.timestep, coord, edges[b], edges[b + 1], centre[b], count[b], fraction[b], error[b]))
         summary.append(f"{label}: {int(flags.sum())} of {len(flags)} grains with {args.value} >= {args.threshold:g} "
                        f"({flags.mean() if len(flags) else np.nan:.4f})")
-    _r_axis(left, args, scaled=True)
-    right.set_xlabel("z")
-    for ax in (left, right):
-        ax.set_ylabel(f"fraction of grains with {args.value} >= {args.threshold:g}")
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "along", "lo", "hi", "centre", "grains",
-                                                       "fraction", "error"], rows,
-                                           ["compute nscd/crush/atom: fraction of grains past the threshold per r "
-                                            "bin and per z bin; error: sqrt(f (1 - f) / n)"] + summary))
+    fig = plots.r_and_z_profiles(curves["r"], curves["z"], _radius(args),
+                                 f"fraction of grains with {args.value} >= {args.threshold:g}")
+    print(plots.save(fig, args.out), _write_csv(args.out, ["label", "step", "along", "lo", "hi", "centre", "grains",
+                                                            "fraction", "error"], rows,
+                                                ["compute nscd/crush/atom: fraction of grains past the threshold per "
+                                                 "r bin and per z bin; error: sqrt(f (1 - f) / n)"] + summary))
     for line in summary:
         print(line)
 
@@ -381,27 +263,19 @@ def cmd_crush_profile(args):
 
 def cmd_wire_breaks(args):
     runs = _parse_runs(args.run)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(5.0, 5.0))
-    rows, summary = [], []
+    rows, summary, groups = [], [], []
     for label, paths in runs:
         for path in paths:
             b = wire_breaks.read_breaks(path)
             r, z = wire_breaks.positions_rz(b, args.axis)
-            ax.scatter(r / _r_scale(args), z, s=14, label=f"{label} ({len(b)})")
+            groups.append((f"{label} ({len(b)})", r / _r_scale(args), z))
             rows += [(label, int(row[0]), int(row[1]), int(row[2]), row[3], ri, zi) for row, ri, zi in zip(b, r, z)]
             summary.append(f"{label}: {len(b)} breaks" + (f", z {np.min(z):.3g}..{np.max(z):.3g} (median {np.median(z):.3g}), "
                                                           f"r {np.min(r):.3g}..{np.max(r):.3g} (median {np.median(r):.3g}), "
                                                           f"steps {int(b[:, 0].min())}..{int(b[:, 0].max())}" if len(b) else ""))
-    _r_axis(ax, args, scaled=True)
-    ax.set_ylabel("z")
-    if args.zmax is not None:
-        ax.set_ylim(0.0, args.zmax)
-    ax.set_xlim(0.0, None)
-    ax.set_title("where the wire broke (element midpoints)", fontsize=9)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["run", "step", "id1", "id2", "tension", "r", "z"], rows, summary))
+    fig = plots.points_rz(groups, _radius(args), args.zmax, "where the wire broke (element midpoints)")
+    print(plots.save(fig, args.out), _write_csv(args.out, ["run", "step", "id1", "id2", "tension", "r", "z"], rows,
+                                                summary))
     for line in summary:
         print(line)
 
@@ -420,20 +294,15 @@ def cmd_force_profile(args):
         profiles.append((s, axis, cylinder.Cylindrical(positions, axis).r if len(positions) else np.zeros(0)))
     r_edges = _r_edges(args, np.concatenate([p[2] for p in profiles]))
     rc = cylinder.centres(r_edges)
-    plt = _pyplot()
-    fig, ax = plt.subplots(figsize=(6.0, 4.2))
-    rows = []
+    rows, curves = [], []
     for (s, axis, _), label in zip(profiles, labels):
         count, mean, sem, _ = forces.radial_profile(s, r_edges, axis, _zrange(args), args.points)
-        ax.errorbar(rc / _r_scale(args), mean, yerr=sem, marker="o", ms=4, capsize=2, label=label)
+        curves.append((label, rc / _r_scale(args), mean, sem))
         for b in range(len(rc)):
             rows.append((label, s.timestep, r_edges[b], r_edges[b + 1], rc[b], count[b], mean[b], sem[b]))
-    _r_axis(ax, args, scaled=True)
-    ax.set_ylabel("mean normal force between grains")
-    ax.legend()
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "contacts",
-                                                       "mean_fn", "sem_fn"], rows))
+    fig = plots.profiles(curves, _radius(args), "mean normal force between grains")
+    print(plots.save(fig, args.out), _write_csv(args.out, ["label", "step", "r_lo", "r_hi", "r", "contacts",
+                                                            "mean_fn", "sem_fn"], rows))
 
 
 # --- wire-contacts: the papers' Fig. 6 --------------------------------------------------
@@ -443,12 +312,8 @@ def cmd_wire_contacts(args):
     labels = args.labels or [f"step {s.timestep}" for s in snaps]
     if len(labels) != len(snaps):
         raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
-    plt = _pyplot()
-    from matplotlib.ticker import MaxNLocator
-    fig, axes = plt.subplots(len(snaps), 2, figsize=(6.4, 2.4 * len(snaps)), subplot_kw={"projection": "polar"},
-                             squeeze=False)
-    rows, summary = [], []
-    for (s, label), (left, right) in zip(zip(snaps, labels), axes):
+    rows, summary, histograms = [], [], []
+    for s, label in zip(snaps, labels):
         points, f = wire_contacts.forces_on_wire(s, args.kind)
         axis = np.array(args.axis) if args.axis is not None else (
             cylinder.axis_from_centre_of_mass(points) if len(points) else np.zeros(2))
@@ -457,25 +322,17 @@ def cmd_wire_contacts(args):
         near = wire_contacts.fraction_near_vertical(alpha, args.vertical_within)
         summary.append(f"{label}: {len(alpha)} contacts, fraction within {args.vertical_within:g} deg of the "
                        f"vertical {near:.3f}, mean in-plane force {np.mean(magnitude) if len(magnitude) else np.nan:.4g}")
-        width = np.diff(edges)
-        left.bar(edges[:-1], fraction, width=width, align="edge", color="tab:blue", edgecolor="k", lw=0.4)
-        right.bar(edges[:-1], np.nan_to_num(normalised), width=width, align="edge", color="tab:orange",
-                  edgecolor="k", lw=0.4)
-        for ax, title in ((left, f"{label}: fraction of contacts"), (right, f"{label}: mean |f| / max")):
-            ax.set_thetamin(0)
-            ax.set_thetamax(180)
-            ax.set_title(title, fontsize=9)
-            ax.yaxis.set_major_locator(MaxNLocator(3))
-            ax.tick_params(labelsize=7)
+        histograms.append((label, edges, fraction, normalised))
         for b in range(args.bins):
             rows.append((label, s.timestep, np.degrees(edges[b]), np.degrees(edges[b + 1]), fraction[b], mean[b],
                          normalised[b]))
         rows.append((label, s.timestep, "within", args.vertical_within, near, "", ""))
-    fig.tight_layout()
-    print(_save(fig, args.out), _write_csv(args.out, ["label", "step", "alpha_lo_deg", "alpha_hi_deg", "fraction",
-                                                       "mean_force", "mean_force_normalised"], rows,
-                                           ["alpha: angle of (f_r, f_z) from the radial direction, 90 = vertical;",
-                                            "rows 'within': fraction of contacts within that many degrees of 90"] + summary))
+    fig = plots.polar_histograms(histograms)
+    print(plots.save(fig, args.out), _write_csv(args.out, ["label", "step", "alpha_lo_deg", "alpha_hi_deg", "fraction",
+                                                            "mean_force", "mean_force_normalised"], rows,
+                                                ["alpha: angle of (f_r, f_z) from the radial direction, 90 = vertical;",
+                                                 "rows 'within': fraction of contacts within that many degrees of 90"]
+                                                + summary))
     for line in summary:
         print(line)
 
@@ -518,22 +375,14 @@ def cmd_timeseries(args):
             raise SystemExit(f"nscd-analysis: --plot '{spec}' must be X:Y[,Y2...] (thermo column names)")
         panels.append((x, ys.split(",")))
     panels = _panels_in_logs(args.log, panels)
-    plt = _pyplot()
-    fig, axes = plt.subplots(len(panels), 1, figsize=(6.0, 2.4 * len(panels)), squeeze=False)
     names = []
     for x, ys in panels:
         for n in [x] + ys:
             if n not in names:
                 names.append(n)
-    for (x, ys), (ax,) in zip(panels, axes):
-        data = logs.thermo_columns(args.log, [x] + ys)
-        for k, y in enumerate(ys):
-            ax.plot(data[:, 0], data[:, k + 1], label=y)
-        ax.set_xlabel(x)
-        ax.legend(fontsize=8)
-    fig.tight_layout()
+    fig = plots.series_panels([(x, ys, logs.thermo_columns(args.log, [x] + ys)) for x, ys in panels])
     table = logs.thermo_columns(args.log, names, require_all=False)
-    print(_save(fig, args.out), _write_csv(args.out, names, table.tolist()))
+    print(plots.save(fig, args.out), _write_csv(args.out, names, table.tolist()))
 
 
 def cmd_thermo_at(args):
@@ -615,18 +464,9 @@ def cmd_wire_loops(args):
     print(_write_csv(args.out, ["step", "first_id", "kind"] + list(LOOP_FIELDS), rows,
                      [f"wire chains about the vertical axis through {tuple(args.axis)}; slack = length / "
                       "(r_median x angle spanned) - 1"]))
-    plt = _pyplot()
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9, 4), sharey=True)
-    for step, step_rows in series:
-        z = [r[4] for r in step_rows]
-        left.plot([r[-1] for r in step_rows], z, "o-", label=f"step {step}")
-        right.plot([r[5] for r in step_rows], z, "o-", label=f"step {step}")
-    left.set_xlabel("slack (length / circle - 1)")
-    left.set_ylabel("mean height of the loop")
-    right.set_xlabel("median radius of the loop")
-    left.legend(fontsize=8)
-    fig.tight_layout()
-    print(_save(fig, args.out))
+    fig = plots.wire_loops([(step, [r[-1] for r in step_rows], [r[5] for r in step_rows], [r[4] for r in step_rows])
+                            for step, step_rows in series])
+    print(plots.save(fig, args.out))
 
 
 # --- argument parsing -------------------------------------------------------------------------

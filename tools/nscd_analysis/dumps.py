@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Reading LAMMPS text dumps (dump custom: ITEM: ATOMS; dump local: ITEM: ENTRIES), plain or
 gzip-compressed, one Snapshot per timestep, and finding columns by name.
 
@@ -12,6 +24,12 @@ import re
 import numpy as np
 
 _INDEXED = re.compile(r"^[cf]_([^\[\]]+)\[(\d+)\]$")
+
+
+def indexed_entry(header_name):
+    """(ID, k) of a header entry c_ID[k] or f_ID[k]; None for any other name."""
+    m = _INDEXED.match(header_name)
+    return (m.group(1), int(m.group(2))) if m else None
 
 
 class DumpError(ValueError):
@@ -46,8 +64,7 @@ class Snapshot:
             return self.columns.index(name)
         if layout is not None and name in layout:
             k = layout[name]
-            found = [i for i, c in enumerate(self.columns)
-                     if _INDEXED.match(c) and int(_INDEXED.match(c).group(2)) == k]
+            found = [i for i, c in enumerate(self.columns) if indexed_entry(c) and indexed_entry(c)[1] == k]
             if len(found) == 1:
                 return found[0]
             if len(found) > 1:

@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Grain-grain contact forces around the column axis (the papers' Fn(r), Fig. 5), from
 compute nscd/contacts output: per pair (keyword pairs; position = midpoint of the two
 centres, force = the pair's total normal force) or per point (position = contact point)."""

@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Per-phase table of a log of examples/column/in.column (or examples/silo/in.silo, or any deck
 that prints a phase number as a thermo column), `nscd-analysis phases` (doc/analysis.md):
 steps, wall time (sum of the runs' "Loop time"), wall time per step, mean solver sweeps per

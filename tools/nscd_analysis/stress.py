@@ -1,7 +1,19 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """Per-grain stresses (compute nscd/stress/atom) and crushing indices (compute nscd/crush/atom)
 around the column's axis: principal stress directions in the r-z plane, the signed angle of
 the major principal stress, sigma_zz vs r, and the fraction of grains past a crushing
-threshold vs r and z. Numbers only; cli.py draws them.
+threshold vs r and z. Numbers only; plots.py draws them.
 
 Sign. compute nscd/stress/atom reports tension positive (LAMMPS' convention): a loaded
 column's grains have sigma_zz < 0. The principal directions here are those of the
@@ -14,12 +26,7 @@ import numpy as np
 from . import fabric
 from .cylinder import Cylindrical, binned_mean
 from .dumps import DumpError
-
-# compute nscd/stress/atom (per-atom array), tension positive
-STRESS = {name: k + 1 for k, name in enumerate("sxx syy szz sxy sxz syz".split())}
-
-# compute nscd/crush/atom (per-atom array): largest contact force, size, F/d^2, index
-CRUSH = {name: k + 1 for k, name in enumerate("fmax d sigma index".split())}
+from .layouts import CRUSH, STRESS
 
 STRESS_COMPONENTS = ("sxx", "syy", "szz", "sxy", "sxz", "syz")
 

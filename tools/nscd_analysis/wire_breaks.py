@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """The breaks files of fix wire (`breaks FILE`: one line per broken element, "step node_id_1
 node_id_2 tension x y z", comment lines starting with #): where the wire broke, in the
 column's cylindrical coordinates."""

@@ -1,3 +1,15 @@
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 """How taut the wire's loops are (nscd-analysis wire-loops): each chain of elements (a
 loop of the column) walked from end to end, with its median distance from the column axis,
 the turns it spans about the axis, its length, and its slack: how much longer it is than the
