@@ -2,7 +2,7 @@
 """Columns of grains and elastic loops: stock LAMMPS (in.peer) against this package (in.nscd).
 
   loops.py run  --code nscd --spacing 1.3 --mu 0.3 --seed 1 [--grains 200] [--dir D]
-  loops.py grid --spacings 0.9 1.2 1.5 1.9 --mus 0.1 0.3 0.5 --seeds 1 2 [--codes nscd peer]
+  loops.py grid --spacings 0.7 0.9 1.2 1.5 1.9 --mus 0.1 0.3 0.5 --seeds 1 2 [--codes nscd peer peer-noroll]
   loops.py plot [--table results.csv]
 
 `run` writes the scene's files into a run directory (the grains' start positions, the loops
@@ -10,7 +10,8 @@ at the spacing, the sphere shape), runs one deck with `lmp` and appends a row to
 code, spacing (grain diameters), mu, seed, heights after settling, after the hold and at the
 end, the retained height (end / hold), stable or collapsed, wall and CPU time of the run.
 `grid` runs the grid one run at a time (at the niceness of this process: start it with
-`nice -n 15`), skipping rows already in the table. `plot` draws the critical spacing
+`nice -n 15`), skipping rows already in the table; per friction, seed and code it goes up
+the spacings and stops at the first collapse (--all: every spacing). `plot` draws the critical spacing
 (the largest spacing at which every seed stood) against friction for each code.
 """
 import argparse
@@ -30,7 +31,10 @@ R_IN = 0.0385        # the cylinder the grains settle in
 R_OUT = 0.04         # the second cylinder, outside the loops
 R_LOOP = 0.03925     # loop radius (centre line): R_out - h/2
 N_BEADS = 180        # beads (nodes) per loop, theirs
-CODES = ["nscd", "peer", "peer-noroll"]   # peer-noroll: in.peer without rolling/twisting resistance
+# peer: in.peer as theirs; peer-noroll: without rolling/twisting resistance; peer-locked: that,
+# and the loops' beads integrated without rotation (fix nve), like this package's wire nodes
+CODES = ["nscd", "peer", "peer-noroll", "peer-locked"]
+CODE_COLOURS = {"nscd": "C0", "peer": "C3", "peer-noroll": "C2", "peer-locked": "C4"}
 STABLE_RETAINED = 0.9   # a column that keeps this fraction of its held height stands
 FIELDS = ["code", "spacing", "mu", "seed", "grains", "loops", "h_settled", "h_held", "h_end",
           "retained", "outcome", "wall_s", "cpu_s", "dt"]
@@ -128,8 +132,9 @@ def run_one(args, code, spacing, mu, seed, table):
            "-var", "dir", rundir, "-var", "mu", str(mu), "-var", "dt", str(dt),
            "-var", "inertia", str(args.inertia), "-var", "t_settle", str(args.t_settle),
            "-var", "t_hold", str(args.t_hold), "-var", "t_free", str(args.t_free)]
-    if code != "nscd":   # peer: their rolling and twisting resistance; peer-noroll: without
-        cmd += ["-var", "rolling", "no" if code == "peer-noroll" else "yes"]
+    if code != "nscd":
+        cmd += ["-var", "rolling", "yes" if code == "peer" else "no",
+                "-var", "bead_spin", "no" if code == "peer-locked" else "yes"]
     cmd += sum((["-var"] + v.split("=", 1) for v in args.var), [])
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.time()
@@ -167,10 +172,11 @@ def run_one(args, code, spacing, mu, seed, table):
 
 
 def done_rows(table):
+    """The rows of the table so far, by (code, spacing, mu, seed)."""
     if not os.path.exists(table):
-        return set()
+        return {}
     with open(table) as f:
-        return {(r["code"], float(r["spacing"]), float(r["mu"]), int(r["seed"])) for r in csv.DictReader(f)}
+        return {(r["code"], float(r["spacing"]), float(r["mu"]), int(r["seed"])): r for r in csv.DictReader(f)}
 
 
 def critical_spacings(rows, code):
@@ -198,32 +204,99 @@ def plot(args):
     import matplotlib.pyplot as plt
     with open(args.table) as f:
         rows = list(csv.DictReader(f))
-    fig, ax = plt.subplots(figsize=(5, 4))
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(10, 4))
+    retained_panel(ax2, rows)
     for code, mark, label in (("nscd", "o-", "this package (NSCD + wire)"),
                               ("peer", "s--", "stock LAMMPS GRANULAR, theirs (rolling)"),
-                              ("peer-noroll", "^:", "stock LAMMPS GRANULAR, no rolling")):
+                              ("peer-noroll", "^:", "stock LAMMPS GRANULAR, no rolling"),
+                              ("peer-locked", "d-.", "stock LAMMPS GRANULAR, no rolling, beads locked")):
         crit = critical_spacings(rows, code)
-        mus = [m for m in crit if crit[m][0] is not None]
+        # no stable spacing: drawn below the smallest tried (a downward triangle on the line)
+        floor = min(float(r["spacing"]) for r in rows) - 0.2
+        mus = sorted(crit)
         if mus:
-            ax.plot(mus, [crit[m][0] for m in mus], mark, label=label)
+            ys = [crit[m][0] if crit[m][0] is not None else floor for m in mus]
+            line, = ax.plot(mus, ys, mark, label=label, color=CODE_COLOURS[code])
+            for m, y in zip(mus, ys):
+                if crit[m][0] is None:
+                    ax.plot(m, y, "v", color=line.get_color(), ms=9)
         # every run: stable filled, collapsed open, slightly offset per code
-        off = {"nscd": -0.008, "peer": 0.0, "peer-noroll": 0.008}[code]
+        off = {"nscd": -0.009, "peer": -0.003, "peer-noroll": 0.003, "peer-locked": 0.009}[code]
         for r in rows:
             if r["code"] != code or r["outcome"] == "failed":
                 continue
-            ax.plot(float(r["mu"]) + off, float(r["spacing"]), mark[0],
-                    mfc="k" if r["outcome"] == "stable" else "none", mec="gray", ms=4, alpha=0.6)
+            ax.plot(float(r["mu"]) + off, float(r["spacing"]), mark[0], color=CODE_COLOURS[code],
+                    mfc=CODE_COLOURS[code] if r["outcome"] == "stable" else "none", ms=4, alpha=0.6)
     ax.set_xlabel("friction coefficient $\\mu$")
     ax.set_ylabel("largest stable loop spacing / grain diameter")
+    ax.axhline(min(float(r["spacing"]) for r in rows) - 0.1, color="gray", lw=0.5, ls=":")
+    ax.plot([], [], "v", color="gray", ms=8, label="no spacing tried stood")
+    ax.plot([], [], "o", color="gray", ms=4, label="a run that stood (open: collapsed)")
     ax.legend(fontsize=8, loc="upper left")
     ax.set_title("columns of grains and elastic loops", fontsize=9)
     fig.tight_layout()
     fig.savefig(args.out, dpi=120)
     print("wrote", args.out)
+    print_tables(rows)
+
+
+def retained_panel(ax, rows):
+    """Retained height against spacing, the mean over seeds, one colour per friction, one
+    line style per code: the graded measure behind the stood/collapsed threshold."""
+    styles = {"nscd": "o-", "peer": "s--", "peer-noroll": "^:", "peer-locked": "d-."}
+    mus = sorted({float(r["mu"]) for r in rows})
+    colours = dict(zip(mus, ["C0", "C1", "C2", "C3", "C4"]))
     for code in CODES:
-        for mu, (c, by_s) in critical_spacings(rows, code).items():
-            print(code, "mu", mu, "critical spacing", c,
-                  " ".join("%.2f:%d/%d" % (s, sum(v), len(v)) for s, v in sorted(by_s.items())))
+        for mu in mus:
+            pts = {}
+            for r in rows:
+                if r["code"] == code and float(r["mu"]) == mu and r["outcome"] != "failed":
+                    pts.setdefault(float(r["spacing"]), []).append(float(r["retained"]))
+            if pts:
+                xs = sorted(pts)
+                ax.plot(xs, [np.mean(pts[x]) for x in xs], styles[code], color=colours[mu], ms=4,
+                        label="%s, $\\mu$ = %.1f" % (code, mu))
+    ax.axhline(STABLE_RETAINED, color="gray", lw=0.8, ls=":")
+    ax.set_xlabel("loop spacing / grain diameter")
+    ax.set_ylabel("retained height (end / held), mean over seeds")
+    ax.legend(fontsize=6, ncol=3)
+
+
+def print_tables(rows):
+    """The README's tables (markdown): the critical spacings, every run, the cost."""
+    print("\n| friction | " + " | ".join(CODES) + " |")
+    print("|---|" + "---|" * len(CODES))
+    crit = {code: critical_spacings(rows, code) for code in CODES}
+    for mu in sorted({float(r["mu"]) for r in rows}):
+        cells = []
+        for code in CODES:
+            if mu not in crit[code]:
+                cells.append("")
+                continue
+            c, by_s = crit[code][mu]
+            tried = ", ".join("%.1f: %d/%d" % (s, sum(v), len(v)) for s, v in sorted(by_s.items()))
+            cells.append("%s (stood: %s)" % ("< %.1f" % min(by_s) if c is None else "%.1f" % c, tried))
+        print("| %.1f | %s |" % (mu, " | ".join(cells)))
+    print("\n| code | mu | seed | spacing / d | loops | h held (m) | h end (m) | retained | outcome | wall (s) | CPU (s) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for r in sorted(rows, key=lambda r: (r["code"], float(r["mu"]), int(r["seed"]), float(r["spacing"]))):
+        print("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % tuple(
+            r[k] for k in ("code", "mu", "seed", "spacing", "loops", "h_held", "h_end", "retained",
+                           "outcome", "wall_s", "cpu_s")))
+    # cost: this package against each peer variant on the runs (friction, seed, spacing) both did
+    keys = {code: {(r["mu"], r["seed"], r["spacing"]): r for r in rows if r["code"] == code and r["outcome"] != "failed"}
+            for code in CODES}
+    print()
+    for code in CODES[1:]:
+        common = set(keys["nscd"]) & set(keys[code])
+        if not common:
+            continue
+        tot = {c: {f: sum(float(keys[c][k][f]) for k in common) for f in ("wall_s", "cpu_s")} for c in ("nscd", code)}
+        print("nscd against %s on the %d runs both did: wall %.0f / %.0f s, CPU %.0f / %.0f s (per run CPU %.1f / %.1f s); "
+              "ratio nscd / %s: wall %.2f, CPU %.2f"
+              % (code, len(common), tot["nscd"]["wall_s"], tot[code]["wall_s"], tot["nscd"]["cpu_s"], tot[code]["cpu_s"],
+                 tot["nscd"]["cpu_s"] / len(common), tot[code]["cpu_s"] / len(common), code,
+                 tot["nscd"]["wall_s"] / tot[code]["wall_s"], tot["nscd"]["cpu_s"] / tot[code]["cpu_s"]))
 
 
 def main():
@@ -237,7 +310,7 @@ def main():
     p.add_argument("--code", default="nscd", choices=CODES)
     p.add_argument("--codes", nargs="+", default=CODES, choices=CODES)
     p.add_argument("--spacing", type=float, default=1.3)
-    p.add_argument("--spacings", type=float, nargs="+", default=[0.9, 1.2, 1.5, 1.9])
+    p.add_argument("--spacings", type=float, nargs="+", default=[0.7, 0.9, 1.2, 1.5, 1.9])
     p.add_argument("--mu", type=float, default=0.3)
     p.add_argument("--mus", type=float, nargs="+", default=[0.1, 0.3, 0.5])
     p.add_argument("--seed", type=int, default=1)
@@ -249,6 +322,7 @@ def main():
     p.add_argument("--t-settle", type=float, default=0.3)
     p.add_argument("--t-hold", type=float, default=0.05)
     p.add_argument("--t-free", type=float, default=0.3)
+    p.add_argument("--all", action="store_true", help="grid: every spacing, not only up to the first collapse")
     p.add_argument("--var", action="append", default=[], help="NAME=VALUE passed to the deck")
     args = p.parse_args()
     args.dir = os.path.abspath(args.dir)
@@ -258,13 +332,16 @@ def main():
     if args.what == "run":
         run_one(args, args.code, args.spacing, args.mu, args.seed, table)
     elif args.what == "grid":
+        # per friction, seed and code: spacings from the smallest up, until the first
+        # collapse (a wider spacing is assumed to collapse too; --all runs every one)
         done = done_rows(table)
         for mu in args.mus:
             for seed in args.seeds:
-                for s in args.spacings:
-                    for code in args.codes:
-                        if (code, s, mu, seed) not in done:
-                            run_one(args, code, s, mu, seed, table)
+                for code in args.codes:
+                    for s in sorted(args.spacings):
+                        row = done.get((code, s, mu, seed)) or run_one(args, code, s, mu, seed, table)
+                        if row["outcome"] == "collapsed" and not args.all:
+                            break
     else:
         plot(args)
 
