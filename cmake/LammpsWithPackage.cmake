@@ -40,6 +40,15 @@ message(STATUS "LAMMPS source tree: ${NSCD_LAMMPS_TREE} (LAMMPS ${NSCD_LAMMPS_VE
 set(BUILD_MPI ON CACHE BOOL "Build LAMMPS with MPI")
 set(PKG_MOLECULE ON CACHE BOOL "Bonds and angles (wire)")
 set(PKG_BODY ON CACHE BOOL "Soft-contact spheropolyhedra, for comparison")
+# LAMMPS' GRANULAR package (pair_style granular, fix wall/gran/region): the peer deck of
+# benchmarks/loops (Guerra & Holmes' columns of grains and elastic loops) in the same lmp.
+# Off by default: only that benchmark needs it, and it adds 22 source files (9.9k lines) to a
+# clean build: 137 s of CPU time without ccache (measured: 123 s user + 14 s system, 249 s
+# wall on the shared 2-core machine under load), next to the 433 objects of the default lmp.
+option(NSCD_WITH_GRANULAR "Compile LAMMPS' GRANULAR package into lmp (benchmarks/loops peer deck)" OFF)
+if(NSCD_WITH_GRANULAR)
+  set(PKG_GRANULAR ON CACHE BOOL "LAMMPS GRANULAR package (NSCD_WITH_GRANULAR)" FORCE)
+endif()
 set(LAMMPS_EXCEPTIONS ON CACHE BOOL "error->all throws; tests check messages (always on from LAMMPS 2024)")
 set(ENABLE_TESTING OFF CACHE BOOL "LAMMPS' own tests download googletest: keep off")
 set(WITH_JPEG OFF CACHE BOOL "")
