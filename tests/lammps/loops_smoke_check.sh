@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Smoke test of benchmarks/loops (Guerra & Holmes' column of grains and elastic loops): a
 # small column (80 grains, two loops 1.2 grain diameters apart) through the whole protocol with
 # short phases, then checks on its end state (check_loops.py): the rings intact (every
