@@ -966,6 +966,37 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwnContact
   }
 }
 
+// A restart file of format 3 (every contact's record in the global block, written before
+// the impulses were kept with the atoms: data/in.stack_format3, 5 resting cubes, 28
+// contacts, whose next step took 1 sweep) is still read: each rank keeps its own atoms'
+// records and none of other ranks' contacts, and the next step is warm (a new fix ID,
+// cold, takes many more).
+TEST_F(NSCDTest, RestartOfFormat3IsReadIntoTheAtoms)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1"};
+  const std::string file = std::string(NSCD_TEST_DATA_DIR) + "/stack_format3.restart";
+  commands({"processors * 1 1", "read_restart " + file});
+  commands(redefine);
+  run("fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1");
+  const std::array<double, 3> held = warm_start_holdings(solver(), MPI_COMM_WORLD);
+  EXPECT_EQ(held[2], 0.0);
+  // the 2 upper cubes on 2 lower ones each and the 3 lower on the floor, 4 points each: 28
+  // contacts, the 16 between cubes kept by both cubes
+  EXPECT_EQ(held[0], 2 * 16 + 12);
+  if (ranks_owning_atoms() > 1) EXPECT_LT(held[1], held[0]);
+  run("run 1");
+  const double warm = fix_value("solver", 0);
+  commands({"unfix solver", "fix cold all nscd tolerance 1e-9 max_sweeps 5000 check 1", "run 1"});
+  const double cold = fix_value("cold", 0);
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: %g records held, at most %g on a rank; first step %g sweeps, cold %g\n",
+                ranks(), held[0], held[1], warm, cold);
+  EXPECT_LE(warm, 3);
+  EXPECT_GT(cold, 10 * 3);
+}
+
 // ---- fix nscd method / coarse: lib/solver's accelerated iterations (doc/nscd_solver.md) ----
 
 // Sum over ranks of the contact forces between each pair of grains (key: smaller ID, larger
