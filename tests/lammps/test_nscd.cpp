@@ -669,6 +669,19 @@ TEST_F(NSCDTest, RespaAndMinimizeAreRefused)
   EXPECT_NE(error_of("run 1").find("respa"), std::string::npos);
 }
 
+// fix nscd hands its warm-start records to the grains in pre_exchange, by the indices of the
+// last solve: a fix that moves atoms between ranks in its own pre_exchange must come after.
+TEST_F(NSCDTest, FixBalanceBeforeFixNscdIsRefused)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "unfix solver", "fix lb all balance 100 1.0 shift x 10 1.0",
+            "fix solver all nscd"});
+  const std::string message = error_of("run 1");
+  EXPECT_NE(message.find("must be defined before fix balance lb"), std::string::npos) << message;
+  commands({"unfix lb", "fix lb all balance 100 1.0 shift x 10 1.0", "run 1"});    // after it: fine
+}
+
 TEST_F(NSCDTest, MovedWallComesBackFromRestart)
 {
   scene(0.0);
