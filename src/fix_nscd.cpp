@@ -102,7 +102,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   comm_forward = 12;
-  comm_reverse = std::max(6, NSCDAtomImpulses::values_for(kRecordsPerGhost));
+  comm_reverse = std::max(6, ghost_records_slot());
   // The contact forces are known only after the solve: their virial is this fix's.
   virial_global_flag = virial_peratom_flag = 1;
   thermo_virial = 1;
@@ -375,7 +375,7 @@ void FixNSCD::setup(int vflag)
   find_partners();
   check_no_bonds_on_grains();
   warn_if_grains_overlap();
-  records_sent = 0.0;
+  records_sent = values_sent = 0.0;
   solver->times.clear();
   solver->run = Solver::RunStats();
   find_smallest_rounding();
@@ -493,6 +493,8 @@ void FixNSCD::post_run()
   if (run.steps == 0) return;
   double sent = 0.0;
   MPI_Allreduce(&records_sent, &sent, 1, MPI_DOUBLE, MPI_SUM, world);
+  double sent_values = 0.0;
+  MPI_Allreduce(&values_sent, &sent_values, 1, MPI_DOUBLE, MPI_SUM, world);
   solver->times[Solver::DETECTION] = timer->get_wall(Timer::PAIR);
   const std::string table = solver->times.table(world, fmt::format("fix nscd {}: time per part", id),
                                                 timer->get_wall(Timer::TOTAL));
@@ -503,9 +505,9 @@ void FixNSCD::post_run()
                  100.0 * run.unconverged / run.steps, solver->options.tolerance, run.deepest, run.deepest_step,
                  table);
   if (comm->nprocs > 1)
-    utils::logmesg(lmp, "fix nscd {}: warm start kept with the atoms: {:.0f} records ({:.4g} MB) packed for "
-                   "other ranks over the run (ghosts' records to their owners, records of migrating atoms)\n",
-                   id, sent, sent * sizeof(nscd::ImpulseRecord) / 1048576.0);
+    utils::logmesg(lmp, "fix nscd {}: warm start kept with the atoms: {:.0f} records packed for other ranks "
+                   "over the run (ghosts' records to their owners, records of migrating atoms), {:.4g} MB with "
+                   "their counts\n", id, sent, sent_values * sizeof(double) / 1048576.0);
 }
 
 void FixNSCD::build_bodies()
@@ -610,8 +612,15 @@ void FixNSCD::hand_ghost_records_to_owners()
     bigint all = 0;
     MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
     if (all == 0) return;
-    comm->reverse_comm(this, NSCDAtomImpulses::values_for(kRecordsPerGhost));
+    comm->reverse_comm(this, ghost_records_slot());
   }
+}
+
+/* Per ghost: its place in the message, its record count and records; a message adds one
+   value (how many ghosts send), covered by the place of any one ghost. */
+int FixNSCD::ghost_records_slot()
+{
+  return 1 + NSCDAtomImpulses::values_for(kRecordsPerGhost) + 1;
 }
 
 /* The record goes to the atom at atom_index (the contact's body) if that is still the
@@ -1049,12 +1058,20 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
 int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (exchange_mode == Exchange::records) {    // a ghost's last records go to its owner, and leave it
-    for (int i = first; i < first + n; i++) {
-      const int packed = solver->atom_impulses.pack_last(i, kRecordsPerGhost, buf + m);
+  if (exchange_mode == Exchange::records) {    // the ghosts' last records go to their owners, and leave them
+    if (n == 0) return 0;    // (a rank that receives for no atom expects nothing)
+    m = 1;                   // {number of ghosts sending, then per ghost: its place k, its records}
+    int sending = 0;
+    for (int k = 0; k < n; k++) {
+      if (solver->atom_impulses.of(first + k).empty()) continue;
+      buf[m++] = k;
+      const int packed = solver->atom_impulses.pack_last(first + k, kRecordsPerGhost, buf + m);
       records_sent += (double) (packed - 1) / NSCDAtomImpulses::kValuesPerRecord;
       m += packed;
+      sending++;
     }
+    buf[0] = sending;
+    values_sent += m;
     return m;
   }
   if (exchange_mode == Exchange::virial) {
@@ -1081,7 +1098,12 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
   if (exchange_mode == Exchange::records) {
-    for (int k = 0; k < n; k++) m += solver->atom_impulses.unpack_append(list[k], buf + m);
+    if (n == 0) return;
+    const int sending = (int) buf[m++];
+    for (int e = 0; e < sending; e++) {
+      const int k = (int) buf[m++];
+      m += solver->atom_impulses.unpack_append(list[k], buf + m);
+    }
     return;
   }
   if (exchange_mode == Exchange::virial) {
@@ -1148,7 +1170,9 @@ void FixNSCD::set_arrays(int i)
 int FixNSCD::pack_exchange(int i, double *buf)
 {
   records_sent += (double) solver->atom_impulses.of(i).size();
-  return solver->atom_impulses.pack(i, buf);
+  const int m = solver->atom_impulses.pack(i, buf);
+  values_sent += m;
+  return m;
 }
 
 int FixNSCD::unpack_exchange(int nlocal, double *buf)

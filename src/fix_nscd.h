@@ -100,7 +100,8 @@ class FixNSCD : public Fix {
   // rebuilds). solved_since_filing: the cache holds a solve the atoms do not have yet.
   bool impulses_with_atoms = false;
   bool solved_since_filing = false;
-  double records_sent = 0.0;    // records packed for ghosts' owners and migrating atoms, this run
+  double records_sent = 0.0;    // records packed for ghosts' owners and migrating atoms, this run,
+  double values_sent = 0.0;     //   and the doubles sent with them (counts, places)
 
   enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode = Exchange::state;
 
@@ -125,6 +126,8 @@ class FixNSCD : public Fix {
   void keep_impulses_with_atoms();
   void hand_ghost_records_to_owners();
   static constexpr int kRecordsPerGhost = 4;    // per ghost and round of hand_ghost_records_to_owners
+  // Values per ghost that a round may send: its place, count and records (plus one per message).
+  static int ghost_records_slot();
   void keep_record_with(int atom_index, const nscd::ImpulseRecord &record);
   void take_impulses_from_atoms();
   void keep_restored_records(const std::vector<nscd::ImpulseRecord> &records);
