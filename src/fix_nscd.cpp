@@ -30,7 +30,7 @@
 #include "domain.h"
 #include "modify.h"
 #include "nscd_arrays.h"
-#include "nscd_gather.h"
+#include "nscd_atom_impulses.h"
 #include "nscd_restart_blocks.h"
 #include "nscd_timing.h"
 #include "neighbor.h"
@@ -55,6 +55,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -87,9 +88,8 @@ struct FixNSCD::Solver {
   nscd::SolverOptions options;
   nscd::ContactProblem problem;
   nscd::SolveReport report;    // of the last step
-  nscd::WarmStartCache warm_start;
-  nscd::WarmStartCache handed_over;    // other ranks' unused impulses, after a list rebuild
-  std::vector<nscd::ImpulseRecord> restored_contacts;    // warm start read from a restart file
+  nscd::WarmStartCache warm_start;       // this rank's contacts of the last solve
+  NSCDAtomImpulses atom_impulses;        // the same kept with the atoms, while they move
 
   // This run's time per part (contact detection is pair nscd's, from LAMMPS' timer) and
   // its solver statistics, reported after the run.
@@ -116,7 +116,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   comm_forward = 12;
-  comm_reverse = 6;
+  comm_reverse = std::max(6, ghost_records_slot());
   // The contact forces are known only after the solve: their virial is this fix's.
   virial_global_flag = virial_peratom_flag = 1;
   thermo_virial = 1;
@@ -194,9 +194,21 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   } catch (std::exception &e) {
     error->all(FLERR, "fix nscd: {}", e.what());
   }
+  // The warm-start impulses as per-atom data: they move with their atoms and are written
+  // per atom to restart files (as fix neigh/history keeps pair granular's shear history).
+  restart_peratom = 1;
+  create_attribute = 1;
+  maxexchange_dynamic = 1;
+  FixNSCD::grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
 }
 
-FixNSCD::~FixNSCD() = default;
+FixNSCD::~FixNSCD()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+}
 
 const std::vector<nscd::Contact> &FixNSCD::contacts() const
 {
@@ -205,7 +217,7 @@ const std::vector<nscd::Contact> &FixNSCD::contacts() const
 
 int FixNSCD::setmask()
 {
-  return POST_FORCE | FINAL_INTEGRATE;
+  return POST_FORCE | FINAL_INTEGRATE | PRE_EXCHANGE;
 }
 
 void FixNSCD::init()
@@ -231,6 +243,7 @@ void FixNSCD::init()
     error->all(FLERR, "fix nscd: timestep {} must be positive and finite; set it with 'timestep DT'", dt);
   find_partners();
   check_no_other_integrator();
+  check_no_migration_before_this_fix();
   check_no_points_in_group();
   check_grains_are_consistent();
   check_overlap_speed();
@@ -376,13 +389,19 @@ void FixNSCD::setup(int vflag)
   find_partners();
   check_no_bonds_on_grains();
   warn_if_grains_overlap();
-  run_started = true;
+  records_sent = values_sent = 0.0;
   solver->times.clear();
   solver->run = Solver::RunStats();
   find_smallest_rounding();
   warned_depth = 0.0;
   post_force(vflag);
   measure_kinetic_energy();
+}
+
+/* On a list rebuild, before atoms change rank: the impulses go with them. */
+void FixNSCD::pre_exchange()
+{
+  keep_impulses_with_atoms();
 }
 
 void FixNSCD::post_force(int vflag)
@@ -427,6 +446,7 @@ void FixNSCD::final_integrate()
   comm->forward_comm(this, 6);
   hand_back_forces();
   solver->warm_start.store(solver->problem.contacts);
+  solved_since_filing = true;
   warn_if_unconverged();
   measure_kinetic_energy();
   warn_if_contacts_can_be_missed();
@@ -482,8 +502,13 @@ void FixNSCD::warn_if_interpenetrating()
 /* After a run: the solver's statistics and the time per part and rank. */
 void FixNSCD::post_run()
 {
+  keep_impulses_with_atoms();    // between runs atoms may move (balance, delete_atoms, ...)
   const Solver::RunStats &run = solver->run;
   if (run.steps == 0) return;
+  double sent = 0.0;
+  MPI_Allreduce(&records_sent, &sent, 1, MPI_DOUBLE, MPI_SUM, world);
+  double sent_values = 0.0;
+  MPI_Allreduce(&values_sent, &sent_values, 1, MPI_DOUBLE, MPI_SUM, world);
   solver->times[Solver::DETECTION] = timer->get_wall(Timer::PAIR);
   const std::string table = solver->times.table(world, fmt::format("fix nscd {}: time per part", id),
                                                 timer->get_wall(Timer::TOTAL));
@@ -493,6 +518,10 @@ void FixNSCD::post_run()
                  id, run.steps, run.sweeps / run.steps, run.max_sweeps, run.max_sweeps_step, run.unconverged,
                  100.0 * run.unconverged / run.steps, solver->options.tolerance, run.deepest, run.deepest_step,
                  table);
+  if (comm->nprocs > 1)
+    utils::logmesg(lmp, "fix nscd {}: warm start kept with the atoms: {:.0f} records packed for other ranks "
+                   "over the run (ghosts' records to their owners, records of migrating atoms), {:.4g} MB with "
+                   "their counts\n", id, sent, sent_values * sizeof(double) / 1048576.0);
 }
 
 void FixNSCD::build_bodies()
@@ -555,48 +584,137 @@ void FixNSCD::gather_contacts()
   warm_start_dt = dt;
 }
 
-/* Impulses of the last step, by contact key. A contact that another rank solved last step
-   (its grain migrated, or the pair changed owner with the new neighbor lists) takes its
-   impulse from the entries that rank did not use. */
+/* Impulses of the last step, by contact key: from the solver's cache, or, after the atoms
+   moved (new neighbor lists, a restart), from the records their atoms brought along. */
 void FixNSCD::warm_start_contacts()
 {
-  const bool changed_rank = contacts_may_have_changed_rank();    // on every solve: it tracks the lists
-  // First step after read_restart: every rank holds every record, nothing to hand over.
-  const bool restored = !solver->restored_contacts.empty();
-  if (restored) {
-    solver->warm_start.store(solver->restored_contacts);
-    solver->restored_contacts.clear();
-  }
-  if (!changed_rank || restored) {
-    solver->warm_start.apply(solver->problem.contacts);
-    return;
-  }
-  nscd::WarmStartLeftovers leftovers;
-  solver->warm_start.apply(solver->problem.contacts, &leftovers);
-  take_over_warm_starts(leftovers);
+  if (impulses_with_atoms) take_impulses_from_atoms();
+  solver->warm_start.apply(solver->problem.contacts);
 }
 
-/* Contacts change rank only with new neighbor lists (atoms migrate and pairs change owner
-   only then). Every rank builds its lists on the same steps and every run starts with new
-   ones (balance, comm changes), so all ranks agree. Call once per solve. */
-bool FixNSCD::contacts_may_have_changed_rank()
+/* Collective. Before atoms move (pre_exchange on a list rebuild, the end of a run, a restart
+   file) each record of the last solve goes to both of its atoms (a boundary contact's to
+   its grain), as seen from that atom; records filed with ghosts go to their owners. The
+   rank that solves a contact next owns at least one of its atoms, and so finds its record.
+   Only the ghosts' records travel, to the neighbouring ranks: O(contacts across the
+   sub-domain surfaces), not a gather. */
+void FixNSCD::keep_impulses_with_atoms()
 {
-  const bool rebuilt = run_started || neighbor->lastcall != lists_of_last_solve;
-  run_started = false;
-  lists_of_last_solve = neighbor->lastcall;
-  return rebuilt && comm->nprocs > 1;
+  if (!solved_since_filing) return;    // the atoms already hold the latest impulses (or none)
+  solved_since_filing = false;
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) solver->atom_impulses.clear(i);
+  for (const nscd::Contact &c : solver->problem.contacts) {
+    const nscd::ImpulseRecord record = nscd::record_of(c);
+    keep_record_with(c.body_i, record);
+    if (record.tag_j > 0) keep_record_with(c.body_j, nscd::reversed(record));    // a grain, not a boundary
+  }
+  hand_ghost_records_to_owners();
+  solver->warm_start.release();
+  impulses_with_atoms = true;
+  maxexchange = NSCDAtomImpulses::values_for(solver->atom_impulses.longest(0, atom->nlocal));
 }
 
-/* Collective. Only the entries no local contact used travel, and only when some rank missed
-   a contact and some rank has such entries: O(changed contacts), not O(all contacts). */
-void FixNSCD::take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers)
+/* Collective. Reverse communication in rounds of at most kRecordsPerGhost records per ghost
+   (LAMMPS' variable-size reverse communication does not work with comm_style tiled), until
+   no ghost holds any: each round moves records one hop towards their owners. */
+void FixNSCD::hand_ghost_records_to_owners()
 {
-  const bigint mine[2] = {(bigint) leftovers.unused.size(), (bigint) leftovers.missed.size()};
-  bigint all[2];
-  MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (all[0] == 0 || all[1] == 0) return;
-  solver->handed_over.store(gather_records(leftovers.unused, world, true));
-  solver->handed_over.apply_to(solver->problem.contacts, leftovers.missed);
+  exchange_mode = Exchange::records;
+  while (true) {
+    const bigint mine = (bigint) solver->atom_impulses.count(atom->nlocal, atom->nghost);
+    bigint all = 0;
+    MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (all == 0) return;
+    comm->reverse_comm(this, ghost_records_slot());
+  }
+}
+
+/* Per ghost: its place in the message, its record count and records; a message adds one
+   value (how many ghosts send), covered by the place of any one ghost. */
+int FixNSCD::ghost_records_slot()
+{
+  return 1 + NSCDAtomImpulses::values_for(kRecordsPerGhost) + 1;
+}
+
+/* The record goes to the atom at atom_index (the contact's body) if that is still the
+   atom of record.tag_i, else to wherever the atom map puts that ID (a fix that added
+   atoms before this one's pre_exchange moves the ghosts); a record whose atom this rank no
+   longer has is dropped (that contact starts from zero). */
+void FixNSCD::keep_record_with(int atom_index, const nscd::ImpulseRecord &record)
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom_index < 0 || atom_index >= nall || atom->tag[atom_index] != record.tag_i)
+    atom_index = atom->map((tagint) record.tag_i);
+  if (atom_index >= 0 && atom_index < nall) solver->atom_impulses.add(atom_index, record);
+}
+
+/* The records of the owned atoms become the solver's cache (a contact both of whose atoms
+   this rank owns comes twice and is kept once); the atoms' lists are emptied. */
+void FixNSCD::take_impulses_from_atoms()
+{
+  std::vector<nscd::ImpulseRecord> held;
+  held.reserve(solver->atom_impulses.count(0, atom->nlocal));
+  for (int i = 0; i < atom->nlocal; i++) {
+    const std::vector<nscd::ImpulseRecord> &mine = solver->atom_impulses.of(i);
+    held.insert(held.end(), mine.begin(), mine.end());
+    solver->atom_impulses.clear(i);
+  }
+  solver->warm_start.store(held);
+  impulses_with_atoms = false;
+}
+
+/* A restart file of format 3 holds every contact's record in the global block: each rank
+   keeps those of its own atoms, as if they had been written per atom. */
+void FixNSCD::keep_restored_records(const std::vector<nscd::ImpulseRecord> &records)
+{
+  std::unordered_map<tagint, int> owned;
+  owned.reserve(atom->nlocal);
+  for (int i = 0; i < atom->nlocal; i++) owned[atom->tag[i]] = i;
+  for (const nscd::ImpulseRecord &r : records)
+    for (const nscd::ImpulseRecord &side : {r, nscd::reversed(r)}) {
+      const auto it = owned.find((tagint) side.tag_i);
+      if (it != owned.end()) solver->atom_impulses.add(it->second, side);
+    }
+  impulses_with_atoms = true;
+  maxexchange = NSCDAtomImpulses::values_for(solver->atom_impulses.longest(0, atom->nlocal));
+}
+
+/* A fix that migrates atoms in its pre_exchange (fix balance, ...) must come after this one:
+   the records are filed by the local indices of the last solve, before anything moves. */
+void FixNSCD::check_no_migration_before_this_fix()
+{
+  for (Fix *other : modify->get_fix_list()) {
+    if (other == this) return;
+    if (other->pre_exchange_migrate)
+      error->all(FLERR, "fix nscd {} must be defined before fix {} {}, which moves atoms between ranks before "
+                 "fix nscd can hand its warm-start impulses to them; define fix {} after fix nscd",
+                 id, other->style, other->id, other->id);
+  }
+}
+
+bool FixNSCD::owned_here(tagint tag) const
+{
+  const int i = atom->map(tag);
+  return i >= 0 && i < atom->nlocal;
+}
+
+size_t FixNSCD::warm_start_records_held() const
+{
+  return solver->atom_impulses.count(0, atom->nlocal + atom->nghost) + solver->warm_start.size();
+}
+
+/* Ghosts hold no records (handed to their owners), and the cache holds this rank's own
+   contacts. Needs an atom map. */
+size_t FixNSCD::warm_start_records_of_other_ranks() const
+{
+  size_t foreign = solver->atom_impulses.count(atom->nlocal, atom->nghost);
+  for (int i = 0; i < atom->nlocal; i++)
+    for (const nscd::ImpulseRecord &r : solver->atom_impulses.of(i))
+      if (!owned_here((tagint) r.tag_i)) foreign++;
+  for (const nscd::ImpulseRecord &r : solver->warm_start.records())
+    if (!owned_here((tagint) r.tag_i) && !(r.tag_j > 0 && owned_here((tagint) r.tag_j))) foreign++;
+  return foreign;
 }
 
 /* Of the last solve's contacts: the pair style's list may be newer (a run's setup finds
@@ -890,13 +1008,13 @@ double FixNSCD::compute_vector(int n)
   return 0.0;
 }
 
-/* The contact problem (bodies, contacts, rows), the warm-start impulses (stored, handed over
-   by other ranks, read from a restart file) and the per-atom virial LAMMPS allocated for
-   this fix: the bulk of a rank's memory in a dense pile (doc/scaling.md). */
+/* The contact problem (bodies, contacts, rows), the warm-start impulses (the solver's cache
+   and those kept with the atoms) and the per-atom virial LAMMPS allocated for this fix: the
+   bulk of a rank's memory in a dense pile (doc/scaling.md). */
 double FixNSCD::memory_usage()
 {
   const std::size_t bytes = solver->problem.memory_bytes() + solver->warm_start.memory_bytes() +
-      solver->handed_over.memory_bytes() + nscd::capacity_bytes(solver->restored_contacts) +
+      solver->atom_impulses.memory_bytes() +
       nscd::capacity_bytes(boundary_counts) + nscd::capacity_bytes(global_bodies) +
       nscd::capacity_bytes(global_body_fixes) + nscd::capacity_bytes(boundaries) + nscd::capacity_bytes(boundary_fixes);
   return (double) bytes + (double) maxvatom * 6 * sizeof(double);
@@ -954,6 +1072,22 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
 int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
 {
   int m = 0;
+  if (exchange_mode == Exchange::records) {    // the ghosts' last records go to their owners, and leave them
+    if (n == 0) return 0;    // (a rank that receives for no atom expects nothing)
+    m = 1;                   // {number of ghosts sending, then per ghost: its place k, its records}
+    int sending = 0;
+    for (int k = 0; k < n; k++) {
+      if (solver->atom_impulses.of(first + k).empty()) continue;
+      buf[m++] = k;
+      const int packed = solver->atom_impulses.pack_last(first + k, kRecordsPerGhost, buf + m);
+      records_sent += (double) (packed - 1) / NSCDAtomImpulses::kValuesPerRecord;
+      m += packed;
+      sending++;
+    }
+    buf[0] = sending;
+    values_sent += m;
+    return m;
+  }
   if (exchange_mode == Exchange::virial) {
     for (int i = first; i < first + n; i++)
       for (int k = 0; k < 6; k++) {
@@ -977,6 +1111,15 @@ int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
 void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 {
   int m = 0;
+  if (exchange_mode == Exchange::records) {
+    if (n == 0) return;
+    const int sending = (int) buf[m++];
+    for (int e = 0; e < sending; e++) {
+      const int k = (int) buf[m++];
+      m += solver->atom_impulses.unpack_append(list[k], buf + m);
+    }
+    return;
+  }
   if (exchange_mode == Exchange::virial) {
     for (int k = 0; k < n; k++)
       for (int c = 0; c < 6; c++) vatom[list[k]][c] += buf[m++];
@@ -993,23 +1136,19 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
   }
 }
 
-/* Restart: the last solved impulses of all contacts, so that a continued run warm-starts
-   exactly as the uninterrupted one (format: nscd_restart_blocks.h). */
+/* Restart: the timestep of the last solved impulses; the impulses themselves are written
+   per atom (pack_restart), after this call has handed them to the atoms. Format:
+   nscd_restart_blocks.h. */
 void FixNSCD::write_restart(FILE *fp)
 {
-  std::vector<nscd::ImpulseRecord> mine;
-  if (!solver->restored_contacts.empty()) {    // read from a restart, not solved since: all on every rank
-    if (comm->me == 0) mine = solver->restored_contacts;
-  } else {
-    for (const nscd::Contact &c : solver->problem.contacts) mine.push_back(nscd::record_of(c));
-  }
+  keep_impulses_with_atoms();
   nscd_restart::SolverBlock block;
-  block.records = gather_records(mine, world, false);
   block.dt = warm_start_dt;
   if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::solver_block(block));
 }
 
-/* read_restart hands every rank the block written above (without its size). */
+/* read_restart hands every rank the block written above (without its size). A file of
+   format 3 holds every contact's record here: each rank keeps its own atoms'. */
 void FixNSCD::restart(char *bytes)
 {
   nscd_restart::SolverBlock block = nscd_checks::read_restart_block(
@@ -1024,5 +1163,80 @@ void FixNSCD::restart(char *bytes)
   // The impulses' timestep, so that a run at another `timestep` starts from the same forces
   // (gather_contacts).
   warm_start_dt = block.dt;
-  solver->restored_contacts = std::move(block.records);
+  if (!block.records.empty()) keep_restored_records(block.records);
+}
+
+void FixNSCD::grow_arrays(int nmax)
+{
+  solver->atom_impulses.grow(nmax);
+}
+
+void FixNSCD::copy_arrays(int i, int j, int /*delflag*/)
+{
+  solver->atom_impulses.copy(i, j);
+}
+
+void FixNSCD::set_arrays(int i)
+{
+  solver->atom_impulses.clear(i);
+}
+
+int FixNSCD::pack_exchange(int i, double *buf)
+{
+  records_sent += (double) solver->atom_impulses.of(i).size();
+  const int m = solver->atom_impulses.pack(i, buf);
+  values_sent += m;
+  return m;
+}
+
+int FixNSCD::unpack_exchange(int nlocal, double *buf)
+{
+  solver->atom_impulses.clear(nlocal);
+  const int m = solver->atom_impulses.unpack_append(nlocal, buf);
+  maxexchange = std::max(maxexchange, m);    // this rank may pass the atom on before the next filing
+  return m;
+}
+
+/* Per atom in restart files: {number of values (LAMMPS' convention), the atom's records in
+   nscd_restart's per-atom format}. */
+int FixNSCD::pack_restart(int i, double *buf)
+{
+  const std::vector<nscd::ImpulseRecord> &records = solver->atom_impulses.of(i);
+  buf[0] = nscd_restart::atom_impulses_values(records.size()) + 1;
+  nscd_restart::write_atom_impulses(records, buf + 1);
+  return (int) buf[0];
+}
+
+void FixNSCD::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;    // skip the values of the fixes stored before this one
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[nlocal][m]);
+  const double size = extra[nlocal][m];
+  std::vector<nscd::ImpulseRecord> records;
+  try {
+    if (!(size >= 1.0 && size <= (double) atom->nextra_store - m))
+      throw nscd_restart::Damaged("atom ID " + std::to_string(atom->tag[nlocal]) + " states " +
+                                  std::to_string(size) + " per-atom values for it: the file is damaged");
+    records = nscd_restart::read_atom_impulses(&extra[nlocal][m + 1], (std::size_t) size - 1, atom->tag[nlocal]);
+  } catch (nscd_restart::Damaged &e) {
+    error->one(FLERR, "fix nscd {}: the warm start in the restart file cannot be used: {}. To start without "
+               "it, define fix nscd with another ID", id, e.what());
+  }
+  maxexchange = std::max(maxexchange, NSCDAtomImpulses::values_for(records.size()));
+  solver->atom_impulses.set(nlocal, std::move(records));
+  impulses_with_atoms = true;
+}
+
+int FixNSCD::size_restart(int i)
+{
+  return nscd_restart::atom_impulses_values(solver->atom_impulses.of(i).size()) + 1;
+}
+
+int FixNSCD::maxsize_restart()
+{
+  const int mine = nscd_restart::atom_impulses_values(solver->atom_impulses.longest(0, atom->nlocal)) + 1;
+  int all = mine;
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
+  return all;
 }

@@ -34,7 +34,7 @@ FixStyle(nscd,FixNSCD);
 
 namespace nscd {
 struct Contact;
-struct WarmStartLeftovers;
+struct ImpulseRecord;
 }    // namespace nscd
 
 namespace LAMMPS_NS {
@@ -50,6 +50,7 @@ class FixNSCD : public Fix {
   void post_force(int) override;
   void final_integrate() override;
   void post_run() override;
+  void pre_exchange() override;
   double compute_vector(int) override;
   double memory_usage() override;
 
@@ -60,6 +61,22 @@ class FixNSCD : public Fix {
 
   void write_restart(FILE *) override;
   void restart(char *) override;
+
+  // The warm-start impulses travel with their atoms (per-atom arrays, doc/fix_nscd.md).
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+
+  // Warm-start records this rank holds (kept with its atoms or in the solver's cache), and
+  // how many of them concern no atom this rank owns (none, by design; tests count them).
+  size_t warm_start_records_held() const;
+  size_t warm_start_records_of_other_ranks() const;
 
   // The contacts of the last solve (grain-grain first, then boundaries), with impulses.
   const std::vector<nscd::Contact> &contacts() const;
@@ -92,10 +109,15 @@ class FixNSCD : public Fix {
   std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
   std::vector<Fix *> global_body_fixes;  // their fixes
 
-  bigint lists_of_last_solve = -1;    // neighbor->lastcall at the last solve
-  bool run_started = true;            // setup() builds new lists (after balance, ...)
+  // Where the warm-start impulses are: with the atoms (after a restart, or filed before atoms
+  // move: pre_exchange, end of a run, write_restart) or in the solver's cache (between list
+  // rebuilds). solved_since_filing: the cache holds a solve the atoms do not have yet.
+  bool impulses_with_atoms = false;
+  bool solved_since_filing = false;
+  double records_sent = 0.0;    // records packed for ghosts' owners and migrating atoms, this run,
+  double values_sent = 0.0;     //   and the doubles sent with them (counts, places)
 
-  enum class Exchange { state, motion, share, correction, velocity, virial } exchange_mode = Exchange::state;
+  enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode = Exchange::state;
 
   // diagnostics of the last step (and the solver's report)
   bigint unconverged_steps = 0, last_warning_step = -1, last_speed_warning_step = -1;
@@ -115,8 +137,16 @@ class FixNSCD : public Fix {
   void gather_contacts();
   void count_shares();
   void warm_start_contacts();
-  bool contacts_may_have_changed_rank();
-  void take_over_warm_starts(const nscd::WarmStartLeftovers &leftovers);
+  void keep_impulses_with_atoms();
+  void hand_ghost_records_to_owners();
+  static constexpr int kRecordsPerGhost = 4;    // per ghost and round of hand_ghost_records_to_owners
+  // Values per ghost that a round may send: its place, count and records (plus one per message).
+  static int ghost_records_slot();
+  void keep_record_with(int atom_index, const nscd::ImpulseRecord &record);
+  void take_impulses_from_atoms();
+  void keep_restored_records(const std::vector<nscd::ImpulseRecord> &records);
+  void check_no_migration_before_this_fix();
+  bool owned_here(tagint tag) const;
   void prepare_problem();
   void write_problem();
   void solve();

@@ -18,6 +18,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace LAMMPS_NS {
 namespace nscd_restart {
@@ -119,7 +120,7 @@ SolverBlock read_solver_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   SolverBlock out;
-  out.format = open_block(in, kSolverFormat, 3, "the contacts' impulses");
+  out.format = open_block(in, kSolverFormat, 3, "the contacts' impulses");    // 3 and 4: one layout
   if (out.format < 3) {    // no size: the stored count cannot be checked
     out.read = false;
     return out;
@@ -131,6 +132,40 @@ SolverBlock read_solver_block(const char *block, std::size_t available)
   in.expect_end();
   for (std::size_t k = 0; k < out.records.size(); k++) check_impulse_record(out.records[k], k);
   return out;
+}
+
+void write_atom_impulses(const std::vector<nscd::ImpulseRecord> &records, double *out)
+{
+  out[0] = kAtomImpulsesFormat;
+  out[1] = (double) records.size();
+  if (!records.empty()) std::memcpy(out + 2, records.data(), records.size() * sizeof(nscd::ImpulseRecord));
+}
+
+std::vector<nscd::ImpulseRecord> read_atom_impulses(const double *values, std::size_t available, std::int64_t tag)
+{
+  if (available < 2)
+    throw Damaged("atom ID " + std::to_string(tag) + " has " + std::to_string(available) +
+                  " warm-start values, fewer than the 2 of its header: the file is damaged");
+  const double format = values[0], count = values[1];
+  if (format != kAtomImpulsesFormat)
+    throw Damaged("atom ID " + std::to_string(tag) + " holds its warm-start impulses in format " + number(format) +
+                  (format > kAtomImpulsesFormat && format <= kNewestKnown && format == std::floor(format)
+                       ? ", this build reads format " + std::to_string(kAtomImpulsesFormat) + "; use a newer build"
+                       : ", which no build writes: the file is damaged"));
+  if (!(count >= 0.0) || count != std::floor(count) ||
+      count > (double) (available - 2) / kValuesPerImpulseRecord ||
+      (std::size_t) atom_impulses_values((std::size_t) count) != available)
+    throw Damaged("atom ID " + std::to_string(tag) + " states " + number(count) + " warm-start records in " +
+                  std::to_string(available) + " values: the file is damaged");
+  std::vector<nscd::ImpulseRecord> records((std::size_t) count);
+  if (!records.empty()) std::memcpy(records.data(), values + 2, records.size() * sizeof(nscd::ImpulseRecord));
+  for (std::size_t k = 0; k < records.size(); k++) {
+    check_impulse_record(records[k], k);
+    if (records[k].tag_i != tag)
+      throw Damaged("atom ID " + std::to_string(tag) + "'s warm-start record " + std::to_string(k + 1) +
+                    " belongs to atom ID " + std::to_string(records[k].tag_i) + ": the file is damaged");
+  }
+  return records;
 }
 
 // ---------------------------------------------------------------------- fix wire

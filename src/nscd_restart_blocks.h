@@ -34,11 +34,13 @@
 namespace LAMMPS_NS {
 namespace nscd_restart {
 
-// ---- fix nscd: the last solved impulse of every contact, for the warm start.
-// Format 3 (sized): {int64 count, double dt (the timestep they were solved with, 0 if not
-// known), count ImpulseRecords}. Formats 1 and 2 (no size: their count cannot be checked)
-// are recognised and not read.
-constexpr std::int32_t kSolverFormat = 3;
+// ---- fix nscd: the timestep of the warm-start impulses (and, up to format 3, the impulses).
+// Format 4 (sized): {int64 count, double dt (the timestep they were solved with, 0 if not
+// known), count ImpulseRecords}; fix nscd writes count 0: the impulses are kept per atom
+// (below). Format 3: the same layout with every contact's record (files written before the
+// impulses were kept with the atoms; read, and each rank keeps those of its own atoms).
+// Formats 1 and 2 (no size: their count cannot be checked) are recognised and not read.
+constexpr std::int32_t kSolverFormat = 4;
 struct SolverBlock {
   std::int32_t format = kSolverFormat;    // as found in the block
   bool read = true;                        // false: an older format, nothing read
@@ -47,6 +49,18 @@ struct SolverBlock {
 };
 std::string solver_block(const SolverBlock &state);
 SolverBlock read_solver_block(const char *block, std::size_t available);
+
+// ---- fix nscd, per atom: the warm-start impulses of the atom's contacts, each record seen
+// from the atom (tag_i = its ID; a contact between two grains is kept by both).
+// Format 1: {double format, double count, count x 6 doubles (the 48 bytes of an
+// ImpulseRecord)}. LAMMPS adds the number of values in front (Fix::pack_restart).
+constexpr std::int32_t kAtomImpulsesFormat = 1;
+constexpr int kValuesPerImpulseRecord = sizeof(nscd::ImpulseRecord) / sizeof(double);
+constexpr int atom_impulses_values(std::size_t count) { return 2 + kValuesPerImpulseRecord * (int) count; }
+// Writes the atom's records to `out` (atom_impulses_values(records.size()) doubles).
+void write_atom_impulses(const std::vector<nscd::ImpulseRecord> &records, double *out);
+// Reads what write_atom_impulses wrote, `available` values, for the atom of ID `tag`.
+std::vector<nscd::ImpulseRecord> read_atom_impulses(const double *values, std::size_t available, std::int64_t tag);
 
 // ---- fix wire: the step of the stored Gear states and the contacts' friction memories.
 // Format 3 (sized): {double dt, int64 count, count StoredContacts}. Format 2 (before the

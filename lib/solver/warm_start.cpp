@@ -57,6 +57,14 @@ ImpulseRecord record_of(const Contact &contact)
   return record_of(contact.key, contact.impulse);
 }
 
+ImpulseRecord reversed(const ImpulseRecord &record)
+{
+  ImpulseRecord r = record;
+  std::swap(r.tag_i, r.tag_j);
+  for (double &p : r.impulse) p = -p;
+  return r;
+}
+
 void WarmStartCache::add(ContactKey key, const Vec3 &impulse, std::size_t at)
 {
   const double sign = canonicalise(key);
@@ -84,6 +92,10 @@ void WarmStartCache::store(const std::vector<ImpulseRecord> &records)
     add({r.tag_i, r.tag_j, r.feature}, Vec3(r.impulse[0], r.impulse[1], r.impulse[2]), k);
   }
   sort_entries();
+  // A contact kept by both of its atoms comes twice when one rank holds both: keep one.
+  entries_.erase(std::unique(entries_.begin(), entries_.end(),
+                             [](const Entry &a, const Entry &b) { return key_equal(a.key, b.key); }),
+                 entries_.end());
 }
 
 long WarmStartCache::find(const Contact &contact, double &sign) const
@@ -97,45 +109,33 @@ long WarmStartCache::find(const Contact &contact, double &sign) const
   return (long) (it - entries_.begin());
 }
 
-long WarmStartCache::apply(std::vector<Contact> &contacts, WarmStartLeftovers *leftovers) const
+long WarmStartCache::apply(std::vector<Contact> &contacts) const
 {
-  std::vector<char> used;    // only asked for on the few steps that hand impulses over
-  if (leftovers) {
-    leftovers->missed.clear();
-    leftovers->unused.clear();
-    used.assign(entries_.size(), 0);
-  }
   long found = 0;
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
+  for (Contact &contact : contacts) {
     double sign;
-    const long e = find(contacts[c], sign);
+    const long e = find(contact, sign);
     if (e >= 0) {
-      contacts[c].impulse = sign * entries_[e].impulse;
+      contact.impulse = sign * entries_[e].impulse;
       ++found;
-      if (leftovers) used[e] = 1;
     } else {
-      contacts[c].impulse.setZero();
-      if (leftovers) leftovers->missed.push_back(c);
+      contact.impulse.setZero();
     }
   }
-  if (leftovers)
-    for (std::size_t e = 0; e < entries_.size(); ++e)
-      if (!used[e]) leftovers->unused.push_back(record_of(entries_[e].key, entries_[e].impulse));
   return found;
 }
 
-long WarmStartCache::apply_to(std::vector<Contact> &contacts,
-                              const std::vector<std::size_t> &which) const
+std::vector<ImpulseRecord> WarmStartCache::records() const
 {
-  long found = 0;
-  for (std::size_t c : which) {
-    double sign;
-    const long e = find(contacts[c], sign);
-    if (e < 0) continue;
-    contacts[c].impulse = sign * entries_[e].impulse;
-    ++found;
-  }
-  return found;
+  std::vector<ImpulseRecord> out;
+  out.reserve(entries_.size());
+  for (const Entry &e : entries_) out.push_back(record_of(e.key, e.impulse));
+  return out;
+}
+
+void WarmStartCache::release()
+{
+  std::vector<Entry>().swap(entries_);
 }
 
 std::size_t WarmStartCache::memory_bytes() const

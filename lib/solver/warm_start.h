@@ -33,37 +33,34 @@ struct ImpulseRecord {
 };
 
 ImpulseRecord record_of(const Contact &contact);
-
-// What one apply() could not match: under domain decomposition the missed contacts may
-// find their impulses among the entries another rank left unused.
-struct WarmStartLeftovers {
-  std::vector<std::size_t> missed;       // indices of the contacts that found no entry
-  std::vector<ImpulseRecord> unused;     // entries that no contact asked for
-};
+// The same record seen from its other body (tags swapped, impulse on that body): a contact
+// kept with each of its two atoms is stored once from each side. The feature code is kept:
+// it names the feature pair whichever body comes first (see WarmStartCache).
+ImpulseRecord reversed(const ImpulseRecord &record);
 
 // Remembers the solved impulses of one step and hands them to the next step's contacts.
 // Keys are canonicalised so the body order does not matter: a key stored as (a, b, f)
 // with impulse P on a is found again as (b, a, f) with impulse -P. The feature code f must
 // therefore name the touching feature pair independently of the body order.
 // Storage is one sorted vector reused between steps (lookup by binary search), so after the
-// first steps neither store() nor apply() without leftovers allocates.
+// first steps neither store() nor apply() allocates.
 class WarmStartCache {
  public:
   // Call after the solve (after ContactProblem::finish()).
   void store(const std::vector<Contact> &contacts);
-  // The same from plain records (a restart file, another rank's leftovers).
+  // The same from plain records (those kept with the atoms, a restart file); a key given
+  // twice (a contact seen from both of its bodies) is kept once.
   void store(const std::vector<ImpulseRecord> &records);
 
   // Sets every contact's impulse to its stored value, or zero for a new contact.
-  // Returns how many contacts were found. With leftovers, also says which contacts were
-  // not found and which entries were not used.
-  long apply(std::vector<Contact> &contacts, WarmStartLeftovers *leftovers = nullptr) const;
-
-  // Sets the impulse of each contact listed in `which` that this cache holds and leaves the
-  // others as they are. Returns how many were found.
-  long apply_to(std::vector<Contact> &contacts, const std::vector<std::size_t> &which) const;
+  // Returns how many contacts were found.
+  long apply(std::vector<Contact> &contacts) const;
+  // Empties the cache and gives its memory back (the impulses now live elsewhere).
+  void release();
 
   std::size_t size() const { return entries_.size(); }
+  // The stored entries as records (canonical: tag_i <= tag_j).
+  std::vector<ImpulseRecord> records() const;
   // Bytes held on the heap (the stored entries, at capacity).
   std::size_t memory_bytes() const;
 

@@ -22,6 +22,7 @@
 #include "fix.h"
 #include "modify.h"
 #include "nscd_restart.h"
+#include "nscd_restart_blocks.h"
 
 #include <cmath>
 #include <cstdint>
@@ -590,7 +591,7 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
     ASSERT_NE(wire, std::string::npos);
     ASSERT_NE(wall, std::string::npos);
     ASSERT_NE(plate, std::string::npos);
-    EXPECT_GT(get<std::int64_t>(original, solver + 16), 0) << "contact records";
+    EXPECT_EQ(get<std::int64_t>(original, solver + 16), 0) << "contact records (per atom since format 4)";
     EXPECT_GT(get<std::int64_t>(original, wire + 24), 0) << "wire memories";
   }
   // header: mark (8 bytes), payload size (8); fix nscd: count (8), dt (8), records;
@@ -610,17 +611,13 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
       {"fix nscd: size larger", [&](std::string &b) { put<std::int64_t>(b, solver + 8, get<std::int64_t>(b, solver + 8) + 48); },
        {"fix nscd solver", "bytes are left"}},
       {"fix nscd: size smaller", [&](std::string &b) { put<std::int64_t>(b, solver + 8, 20); },
-       {"fix nscd solver", "only 4 bytes are left"}},
+       {"fix nscd solver", "4 bytes are left after its contents"}},    // no records since format 4
       {"fix nscd: format 1000", [&](std::string &b) { put<std::int32_t>(b, solver + 4, 1000); },
-       {"fix nscd solver", "format 1000", "up to 3"}},
+       {"fix nscd solver", "format 1000", "up to 4"}},
       {"fix nscd: format -7", [&](std::string &b) { put<std::int32_t>(b, solver + 4, -7); },
        {"fix nscd solver", "format number -7"}},
       {"fix nscd: a denormal timestep", [&](std::string &b) { put<double>(b, solver + 24, 5e-315); },
        {"fix nscd solver", "the impulses' timestep is 5.00000000228"}},
-      {"fix nscd: a NaN impulse", [&](std::string &b) { put<double>(b, solver + 32 + 24, NAN); },
-       {"fix nscd solver", "contact record 1's impulse is nan"}},
-      {"fix nscd: a record of one body", [&](std::string &b) { put<std::int64_t>(b, solver + 32 + 8, get<std::int64_t>(b, solver + 32)); },
-       {"fix nscd solver", "contact record 1 joins the bodies"}},
       {"fix wire: foreign mark", [&](std::string &b) { b[wire + 1] ^= 0x11; },
        {"fix wire w", "does not begin with this package's mark"}},
       {"fix wire: count too large", [&](std::string &b) { put<std::int64_t>(b, wire + 24, 1ll << 40); },
@@ -655,6 +652,55 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
   // and the undamaged file reads and runs on
   EXPECT_EQ(error_after([](std::string &) {}), "");
   EXPECT_EQ(error_of("run 2"), "");
+}
+
+// fix nscd's per-atom warm start (format 1: {format, count, 6 values per record}), as
+// read_restart hands it to the fix per atom: a newer format, a count that does not fit the
+// values, a record of another atom, of one body, a NaN impulse are refused naming the atom.
+// (fix nscd stops with error->one on the rank owning the atom; here the reader directly.)
+TEST(AtomWarmStartDamage, DamagedAtomRecordsAreRefusedByName)
+{
+  using namespace LAMMPS_NS::nscd_restart;
+  nscd::ImpulseRecord a, b;
+  a.tag_i = b.tag_i = 7;
+  a.tag_j = 9, b.tag_j = -3;
+  a.feature = 5, b.feature = 6;
+  a.impulse[2] = 1.5, b.impulse[0] = -0.5;
+  std::vector<double> good(atom_impulses_values(2));
+  write_atom_impulses({a, b}, good.data());
+  const std::vector<nscd::ImpulseRecord> back = read_atom_impulses(good.data(), good.size(), 7);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].tag_j, -3);
+  EXPECT_EQ(back[0].impulse[2], 1.5);
+  auto contains = [](const std::string &message, const std::string &part) {
+    return message.find(part) != std::string::npos;
+  };
+  auto refusal = [](std::vector<double> values, std::int64_t tag) {
+    try {
+      read_atom_impulses(values.data(), values.size(), tag);
+    } catch (Damaged &e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  auto with = [&](int at, double value) {
+    std::vector<double> v = good;
+    v[at] = value;
+    return v;
+  };
+  auto with_bytes = [&](int at, std::int64_t value) {
+    std::vector<double> v = good;
+    std::memcpy(&v[at], &value, sizeof(value));
+    return v;
+  };
+  EXPECT_TRUE(contains(refusal(with(0, 2.0), 7), "atom ID 7 holds its warm-start impulses in format 2, this build reads format 1; use a newer build"));
+  EXPECT_TRUE(contains(refusal(with(0, 0.5), 7), "which no build writes"));
+  EXPECT_TRUE(contains(refusal(with(1, 3.0), 7), "atom ID 7 states 3 warm-start records in 14 values"));
+  EXPECT_TRUE(contains(refusal(with(1, -1.0), 7), "states -1 warm-start records"));
+  EXPECT_TRUE(contains(refusal(good, 8), "atom ID 8's warm-start record 1 belongs to atom ID 7"));
+  EXPECT_TRUE(contains(refusal(with_bytes(2 + 1, 7), 7), "contact record 1 joins the bodies 7 and 7"));
+  EXPECT_TRUE(contains(refusal(with(2 + 6 + 3, NAN), 7), "contact record 2's impulse is nan"));
+  EXPECT_TRUE(contains(refusal(std::vector<double>(good.begin(), good.begin() + 1), 7), "fewer than the 2 of its header"));
 }
 
 // The previous formats: fix nscd's format 2 and fix wire's format 2 had no size (their

@@ -683,6 +683,19 @@ TEST_F(NSCDTest, RespaAndMinimizeAreRefused)
   EXPECT_NE(error_of("run 1").find("respa"), std::string::npos);
 }
 
+// fix nscd hands its warm-start records to the grains in pre_exchange, by the indices of the
+// last solve: a fix that moves atoms between ranks in its own pre_exchange must come after.
+TEST_F(NSCDTest, FixBalanceBeforeFixNscdIsRefused)
+{
+  scene();
+  add_cube(0.0, 0.0, 0.5);
+  commands({"shapes assign all shape 1 density 1", "unfix solver", "fix lb all balance 100 1.0 shift x 10 1.0",
+            "fix solver all nscd"});
+  const std::string message = error_of("run 1");
+  EXPECT_NE(message.find("must be defined before fix balance lb"), std::string::npos) << message;
+  commands({"unfix lb", "fix lb all balance 100 1.0 shift x 10 1.0", "run 1"});    // after it: fine
+}
+
 TEST_F(NSCDTest, MovedWallComesBackFromRestart)
 {
   scene(0.0);
@@ -834,6 +847,181 @@ TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
     const std::vector<double> s = state_of(k);
     for (int d = 0; d < 3; d++) EXPECT_NEAR(s[d], on_one_rank[3 * (k - 1) + d], 1e-6) << "atom " << k;
   }
+}
+
+// ---- warm-start impulses kept with their atoms (doc/fix_nscd.md, "Restart") ----
+
+// The rank owning the atom of this ID (-1 if none), on every rank of `world`.
+static int owner_of(LAMMPS *lmp, tagint tag, MPI_Comm world)
+{
+  const int i = lmp->atom->map(tag);
+  int me = 0, mine = -1, owner = -1;
+  MPI_Comm_rank(world, &me);
+  if (i >= 0 && i < lmp->atom->nlocal) mine = me;
+  MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MAX, world);
+  return owner;
+}
+
+// Warm-start records held by the ranks of `world`: {summed, most on one rank, summed of
+// those concerning no atom of the holding rank}.
+static std::array<double, 3> warm_start_holdings(FixNSCD *fix, MPI_Comm world)
+{
+  const double held = (double) fix->warm_start_records_held();
+  const double foreign = (double) fix->warm_start_records_of_other_ranks();
+  std::array<double, 3> out{};
+  MPI_Allreduce(&held, &out[0], 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&held, &out[1], 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&foreign, &out[2], 1, MPI_DOUBLE, MPI_SUM, world);
+  return out;
+}
+
+// A stack of two cubes slides at constant speed on a frictionless floor across the
+// sub-domain cut at x = 0 (processors * 1 1): both atoms, and so the four floor contacts
+// and the four cube-cube contacts (static friction), change rank in the middle of a run.
+// The impulses do not change from step to step, so with the warm start every step needs
+// few sweeps (check 1, tolerance 1e-9). Measured: resting 0; sliding at most 3 per step,
+// the same sequence on 1, 2 and 4 ranks; cold start 46. With the records left behind when
+// atoms migrate (pack_exchange sending none) the step after the crossing took 46 on 2
+// ranks. Before the impulses were kept with the atoms this held too (the leftovers gather).
+TEST_F(NSCDTest, WarmStartSurvivesItsAtomsChangingRankMidRun)
+{
+  const std::string solver = "fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1";
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+            "processors * 1 1", "shapes read " + scratch("shapes"), "region box block -10 10 -10 10 -1 19",
+            "create_box 1 box", "pair_style nscd", "pair_coeff * * 0.5", "neighbor 0.3 bin",
+            "neigh_modify every 1 delay 0 check yes", "timestep 0.001",
+            "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0", "fix g all gravity 1.0 vector 0 0 -1", solver});
+  add_cube(-1.0, 0.0, 0.5);
+  add_cube(-1.0, 0.0, 1.5);
+  commands({"shapes assign all shape 1 density 1", "run 300"});
+  const double resting = fix_value("solver", 0);
+  const int owner_before = owner_of(lmp, 1, MPI_COMM_WORLD);
+  // 400 steps at 5: x from -1 to +1, every step's sweeps written to a file
+  commands({"velocity all set 5 0 0", "fix sweeps all print 1 \"$(f_solver[1])\" file " + scratch("sweeps") +
+                                          " screen no",
+            "run 400", "unfix sweeps"});
+  const int owner_after = owner_of(lmp, 1, MPI_COMM_WORLD);
+  if (ranks() > 1) {
+    EXPECT_NE(owner_before, owner_after) << "the stack did not change rank";
+    EXPECT_EQ(owner_of(lmp, 2, MPI_COMM_WORLD), owner_after);
+  }
+  EXPECT_NEAR(position_of(1)[0], 1.0, 1e-6);
+  EXPECT_NEAR(normal_force_between(1, 2), 1.0, 1e-6);    // the top cube's weight
+  std::ifstream in(scratch("sweeps"));
+  std::string line;
+  double most = 0.0;
+  int steps = 0;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') most = std::max(most, std::stod(line)), steps++;
+  EXPECT_EQ(steps, 401);    // the run's setup and 400 steps
+  commands({"unfix solver", solver, "run 1"});    // a new fix: no stored impulses
+  const double cold = fix_value("solver", 0);
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: rank of atom 1 %d -> %d; sweeps resting %g, at most %g per step while "
+                "sliding, cold %g\n", ranks(), owner_before, owner_after, resting, most, cold);
+  EXPECT_LE(most, 3);
+  EXPECT_GT(cold, 10 * 3);
+}
+
+// A restart written on all ranks of this run (4, or 2) is read on fewer ranks (2 and 1, on
+// their own communicators). Right after read_restart no rank holds a record of a contact
+// none of whose atoms it owns, the ranks hold as many records between them as the writers
+// did, and none holds all when several own grains; the first step needs no more sweeps than
+// the uninterrupted run's, and 100 steps on, the grains are where the uninterrupted run put
+// them (to the solver's round-off: the Gauss-Seidel order differs with the rank count).
+// Before the impulses were kept with the atoms every rank held every record after
+// read_restart: the count of other ranks' records was (ranks - 1) x all.
+TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwnContacts)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
+      "fix solver all nscd tolerance 1e-10 max_sweeps 5000 check 1"};
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f f f",
+            "processors * 1 1", "shapes read " + scratch("shapes"), "region box block -10 10 -10 10 -1 19",
+            "create_box 1 box", "pair_style nscd", "pair_coeff * * 0.5", "timestep 0.001"});
+  commands(redefine);
+  for (int level = 0; level < 4; level++)    // a pyramid of 10 cubes across x = 0, dropped from 0.05
+    for (int k = 0; k < 4 - level; k++) add_cube(-1.4 + 0.55 * level + 1.1 * k, 0.0, 0.55 + 1.01 * level);
+  commands({"shapes assign all shape 1 density 1 orient random 3", "run 150",
+            "write_restart " + scratch("written.restart")});
+  const std::array<double, 3> written = warm_start_holdings(solver(), MPI_COMM_WORLD);
+  EXPECT_EQ(written[2], 0.0);
+  run("run 1");
+  const double first_sweeps = fix_value("solver", 0);
+  run("run 99");
+  std::vector<std::array<double, 3>> straight;
+  for (tagint k = 1; k <= 10; k++) straight.push_back(position_of(k));
+  EXPECT_GT(written[0], 40.0);    // floor and cube-cube contacts: 4 points each, most twice
+
+  for (int size : {2, 1}) {
+    if (size >= ranks()) continue;
+    MPI_Comm fewer;
+    MPI_Comm_split(MPI_COMM_WORLD, rank() < size ? 0 : MPI_UNDEFINED, 0, &fewer);
+    if (rank() < size) {
+      LAMMPS_NS::LAMMPS *all_ranks = lmp;
+      const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+      lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), fewer);
+      commands({"processors * 1 1", "read_restart " + scratch("written.restart")});
+      commands(redefine);
+      const std::array<double, 3> read = warm_start_holdings(solver(), fewer);
+      int owning = lmp->atom->nlocal > 0, ranks_owning = 0;
+      MPI_Allreduce(&owning, &ranks_owning, 1, MPI_INT, MPI_SUM, fewer);
+      EXPECT_EQ(read[2], 0.0) << size << " ranks: records of other ranks' contacts";
+      EXPECT_EQ(read[0], written[0]) << size << " ranks";
+      if (ranks_owning > 1) EXPECT_LT(read[1], read[0]) << size << " ranks";
+      run("run 1");
+      EXPECT_LE(fix_value("solver", 0), first_sweeps + 2) << size << " ranks";
+      run("run 99");
+      for (tagint k = 1; k <= 10; k++) {
+        const int i = lmp->atom->map(k);
+        double mine[3] = {0.0, 0.0, 0.0}, x[3];
+        if (i >= 0 && i < lmp->atom->nlocal)
+          for (int d = 0; d < 3; d++) mine[d] = lmp->atom->x[i][d];
+        MPI_Allreduce(mine, x, 3, MPI_DOUBLE, MPI_SUM, fewer);
+        for (int d = 0; d < 3; d++) EXPECT_NEAR(x[d], straight[k - 1][d], 1e-6) << size << " ranks, cube " << k;
+      }
+      if (rank() == 0)
+        std::printf("[ INFO     ] written on %d ranks: %g records held; read on %d: %g held, at most %g "
+                    "on one rank, %g of other ranks' contacts; first step %g sweeps (uninterrupted %g)\n",
+                    ranks(), written[0], size, read[0], read[1], read[2], fix_value("solver", 0), first_sweeps);
+      delete lmp;
+      lmp = all_ranks;
+      MPI_Comm_free(&fewer);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+}
+
+// A restart file of format 3 (every contact's record in the global block, written before
+// the impulses were kept with the atoms: data/in.stack_format3, 5 resting cubes, 28
+// contacts, whose next step took 1 sweep) is still read: each rank keeps its own atoms'
+// records and none of other ranks' contacts, and the next step is warm (a new fix ID,
+// cold, takes many more).
+TEST_F(NSCDTest, RestartOfFormat3IsReadIntoTheAtoms)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+      "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1"};
+  const std::string file = std::string(NSCD_TEST_DATA_DIR) + "/stack_format3.restart";
+  commands({"processors * 1 1", "read_restart " + file});
+  commands(redefine);
+  run("fix solver all nscd tolerance 1e-9 max_sweeps 5000 check 1");
+  const std::array<double, 3> held = warm_start_holdings(solver(), MPI_COMM_WORLD);
+  EXPECT_EQ(held[2], 0.0);
+  // the 2 upper cubes on 2 lower ones each and the 3 lower on the floor, 4 points each: 28
+  // contacts, the 16 between cubes kept by both cubes
+  EXPECT_EQ(held[0], 2 * 16 + 12);
+  if (ranks_owning_atoms() > 1) EXPECT_LT(held[1], held[0]);
+  run("run 1");
+  const double warm = fix_value("solver", 0);
+  commands({"unfix solver", "fix cold all nscd tolerance 1e-9 max_sweeps 5000 check 1", "run 1"});
+  const double cold = fix_value("cold", 0);
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: %g records held, at most %g on a rank; first step %g sweeps, cold %g\n",
+                ranks(), held[0], held[1], warm, cold);
+  EXPECT_LE(warm, 3);
+  EXPECT_GT(cold, 10 * 3);
 }
 
 // ---- fix nscd method / coarse: lib/solver's accelerated iterations (doc/nscd_solver.md) ----
