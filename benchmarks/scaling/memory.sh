@@ -1,4 +1,16 @@
 #!/bin/bash
+# ----------------------------------------------------------------------
+# NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+# spheropolyhedra coupled to elastic wires.
+#
+# Copyright (2026) the NSCD package developers. This software is
+# distributed under the GNU General Public License, version 2, the
+# licence of LAMMPS. See the LICENSE file in the top-level directory
+# of the package.
+# ----------------------------------------------------------------------
+# Contributing author: the NSCD package developers
+# ----------------------------------------------------------------------
+
 # Memory per rank after read_restart (issue 28): in.bed_memory's restart of the settled bed
 # replicated to 100800 grains (written once per WORK on WRITE_NP ranks), read on 1 and on 4 ranks
 # with `run 0`. Prints per rank count LAMMPS' "Per MPI rank memory" line (min/avg/max) and
