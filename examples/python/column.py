@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 # ----------------------------------------------------------------------
 # NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
 # spheropolyhedra coupled to elastic wires.
