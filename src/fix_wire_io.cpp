@@ -211,8 +211,7 @@ void FixWire::unpack_restart(int nlocal, int nth)
                  "it is damaged; define fix wire with another ID to start without it", id, atom->tag[nlocal],
                  state[c], c + 1, kGearColumns);
   std::copy(state, state + kGearColumns, gear[nlocal]);
-  lib->atom_memories.clear(nlocal);
-  if (extra[m] == gear_only) return;
+  if (extra[m] == gear_only) return;    // wire format 3 or older: restart() kept the atom's memories
   try {
     const auto values = (std::size_t) extra[m] - gear_only;
     lib->atom_memories.set(nlocal, nscd_restart::read_atom_memories(state + kGearColumns, values, atom->tag[nlocal]));
