@@ -1043,6 +1043,19 @@ TEST_F(CrossingWiresTest, AcrossAPeriodicBoundaryTheContactIsFoundOnceAndSticks)
   EXPECT_NEAR(x3() - before, 0.3 * kNormal / 1e4, 1e-5);
 }
 
+// fix wire hands its memories to the atoms in its pre_exchange, by where they were at the
+// last step: a fix that moves atoms between ranks in its own pre_exchange (fix balance)
+// must come after it, and is refused by name before it.
+TEST_F(CrossingWiresTest, FixBalanceBeforeFixWireIsRefused)
+{
+  crossing();
+  commands({"unfix w", "fix lb all balance 100 1.0 shift x 10 1.0",
+            "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " mu_s 0.5"});
+  const std::string message = error_of("run 1");
+  EXPECT_NE(message.find("fix wire w must be defined before fix balance lb"), std::string::npos) << message;
+  commands({"unfix lb", "fix lb all balance 100 1.0 shift x 10 1.0", "run 1"});    // after it: fine
+}
+
 TEST_F(CrossingWiresTest, HistoryIsHandedOverWhenTheLastStepRebuiltTheLists)
 {
   EXPECT_NEAR(moved_across_balance(true), 0.0, 1e-9);
