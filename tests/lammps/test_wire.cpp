@@ -514,17 +514,6 @@ static double largest_difference(const std::vector<double> &a, const std::vector
   return most;
 }
 
-// The rank owning atom `tag` (-1 if none), on every rank.
-static int owner_of(LAMMPS *lmp, tagint tag)
-{
-  const int i = lmp->atom->map(tag);
-  int me = 0, mine = -1, owner = -1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &me);
-  if (i >= 0 && i < lmp->atom->nlocal) mine = me;
-  MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  return owner;
-}
-
 // A wire held by friction on a cube that a conveyor (fix move) carries at speed 5 across the
 // sub-domain cut at x = 0, wire and cube moving together: every node, and so the first node
 // of each element, which computes the element's contact with the cube and keeps its friction
@@ -546,11 +535,11 @@ TEST_F(WireOnGrainTest, FrictionHistorySurvivesItsNodeChangingRankMidRun)
             "run 2000"});
   const double resting = fix_value("w", 7);    // the wire's force on the cube along x, at rest
   const std::array<double, 3> before = memory_holdings(lmp, MPI_COMM_WORLD);
-  const int owner_before = owner_of(lmp, 1);
+  const int owner_before = owner_of(lmp, 1, MPI_COMM_WORLD);
   commands({"velocity wire set 5 0 0", "velocity cube set 5 0 0", "fix conveyor cube move linear 5 0 0",
             "fix fx all print 1 \"$(f_w[8]:%.17g)\" file " + scratch("fx") + " screen no", "run 400", "unfix fx"});
   const std::array<double, 3> after = memory_holdings(lmp, MPI_COMM_WORLD);
-  const int owner_after = owner_of(lmp, 1);
+  const int owner_after = owner_of(lmp, 1, MPI_COMM_WORLD);
   EXPECT_NEAR(position(6)[0], 1.0, 1e-9);
   for (int k = 1; k <= 5; k++) EXPECT_NEAR(position(k)[0] - position(6)[0], -0.4 + 0.2 * (k - 1), 1e-3) << "node " << k;
   std::ifstream in(scratch("fx"));
