@@ -654,12 +654,7 @@ void FixNSCD::keep_record_with(int atom_index, const nscd::ImpulseRecord &record
 void FixNSCD::take_impulses_from_atoms()
 {
   std::vector<nscd::ImpulseRecord> held;
-  held.reserve(solver->atom_impulses.count(0, atom->nlocal));
-  for (int i = 0; i < atom->nlocal; i++) {
-    const std::vector<nscd::ImpulseRecord> &mine = solver->atom_impulses.of(i);
-    held.insert(held.end(), mine.begin(), mine.end());
-    solver->atom_impulses.clear(i);
-  }
+  solver->atom_impulses.move_all(0, atom->nlocal, held);
   solver->warm_start.store(held);
   impulses_with_atoms = false;
 }
@@ -684,13 +679,7 @@ void FixNSCD::keep_restored_records(const std::vector<nscd::ImpulseRecord> &reco
    the records are filed by the local indices of the last solve, before anything moves. */
 void FixNSCD::check_no_migration_before_this_fix()
 {
-  for (Fix *other : modify->get_fix_list()) {
-    if (other == this) return;
-    if (other->pre_exchange_migrate)
-      error->all(FLERR, "fix nscd {} must be defined before fix {} {}, which moves atoms between ranks before "
-                 "fix nscd can hand its warm-start impulses to them; define fix {} after fix nscd",
-                 id, other->style, other->id, other->id);
-  }
+  nscd_checks::refuse_migration_before(lmp, this, "its warm-start impulses");
 }
 
 bool FixNSCD::owned_here(tagint tag) const

@@ -82,6 +82,8 @@ enum Diagnostic {
 FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
 {
   time_integrate = restart_global = restart_peratom = create_attribute = 1;
+  maxexchange_dynamic = 1;    // the friction memories travel with their nodes
+  maxexchange = kGearColumns + 1;
   vector_flag = global_freq = 1;
   size_vector = (int) diagnostics.size();
   extvector = 0;
@@ -244,6 +246,7 @@ void *FixWire::extract(const char *name, int &dim)
 void FixWire::init()
 {
   nscd_checks::refuse_second_instance<FixWire>(lmp, this, "one fix handles all wire nodes and their contacts");
+  nscd_checks::refuse_migration_before(lmp, this, "its contacts' friction memories");
   if (update->whichflag == 2)
     error->all(FLERR, "fix wire cannot take part in 'minimize': it integrates the wire nodes on its "
                "own subcycle and has no minimizer forces; unfix it before minimize (or relax the wire "
@@ -426,7 +429,8 @@ void FixWire::make_contact_model()
   if (!(skin > 0.0))
     error->all(FLERR, "fix wire: contacts need a skin > 0 for their candidate lists; give 'neighbor "
                "SKIN bin' or fix wire's 'skin S'");
-  std::vector<wire::StoredContact> memories = lib->contacts ? lib->contacts->memories() : lib->restored;
+  std::vector<wire::StoredContact> memories;
+  if (lib->contacts) memories = lib->contacts->take_memories_unless([](std::int64_t) { return false; });
   lib->contacts = std::make_unique<wire::ContactModel>(lib->law, wire_radius, skin);
   try {
     lib->contacts->set_wire_wire_friction(mu_ww_s, mu_ww_d);
@@ -442,7 +446,6 @@ void FixWire::make_contact_model()
   }
   lib->contacts->add_memories(memories);
   lib->contacts->record_contacts(contacts_recorded);
-  lib->restored.clear();
   lib->step.contacts = lib->contacts.get();
 }
 
@@ -623,7 +626,7 @@ void FixWire::post_force(int /*vflag*/)
   load_nodes();
   if (lib->contacts) update_scene(reindexed);
   else lib->step.reactions.reset((int) lib->boundaries.size());
-  if (lib->contacts && reindexed) hand_over_memories();
+  if (lib->contacts && memories_with_atoms) take_memories_from_atoms();
   try {
     const wire::StepTotals t = lib->step.run(lib->plan, lib->corrector, *lib, lib->timing);
     const double values[6] = {t.elastic.axial, t.elastic.bending, t.contacts.energy, (double) t.contacts.wire_wire,

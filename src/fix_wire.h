@@ -38,6 +38,10 @@ FixStyle(wire,FixWire);
 #include <string>
 #include <vector>
 
+namespace nscd::wire {
+struct StoredContact;
+}    // namespace nscd::wire
+
 namespace LAMMPS_NS {
 
 // A wire element that broke (option strength): node IDs, tension, midpoint.
@@ -86,6 +90,12 @@ class FixWire : public Fix {
   void record_contacts();
   std::vector<double> contact_rows() const;
 
+  // Friction memories this rank holds (kept with its atoms or in the contact model), and
+  // how many of them belong to a contact this rank does not compute, i.e. whose first node
+  // it does not own (none, by design; tests count them). Need an atom map.
+  size_t wire_memories_held() const;
+  size_t wire_memories_of_other_ranks() const;
+
   // "radius" (create_wire's default), "k_n" (0: no contacts): pointers to doubles, dim 0.
   void *extract(const char *, int &) override;
   void pre_exchange() override;
@@ -127,7 +137,10 @@ class FixWire : public Fix {
   int owned_nodes = 0;
   bool grains_anywhere = false;    // on some rank, owned or ghost: the grain exchanges are collective
   bigint indexed_at = -1;       // neighbour build the indices belong to
-  bool memories_on_every_rank = false;    // just read from a restart file
+  // Where the friction memories are: with the atoms that compute their contacts (after a
+  // restart, or filed before atoms move: pre_exchange, the end of a run, write_restart) or
+  // in the contact model (while the atoms stay on their ranks).
+  bool memories_with_atoms = false;
 
   // Global wire topology, the same on every rank: (lower tag, higher tag) of each element.
   std::vector<std::array<tagint, 2>> elements;
@@ -185,7 +198,10 @@ class FixWire : public Fix {
   void store_nodes();
   void update_scene(bool reindexed);
   int element_partner(int i, tagint tag) const;
-  void hand_over_memories();
+  void keep_memories_with_atoms();
+  void take_memories_from_atoms();
+  void keep_restored_memories(const std::vector<nscd::wire::StoredContact> &memories);
+  bool owned_here(tagint tag) const;
   void check_motion_within_skin();
   void hand_forces();
   void communicate(Comm mode, bool reverse, bool counted = false);

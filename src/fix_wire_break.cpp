@@ -131,11 +131,13 @@ void FixWire::remove_from_topology(const std::vector<Break> &broken)
   specials_stale = true;
 }
 
-/* The 1-2 and 1-3 neighbours of the nodes (LAMMPS' pair exclusions) follow the new topology.
+/* Before atoms change rank: the friction memories go with their atoms (fix_wire_io.cpp).
+   The 1-2 and 1-3 neighbours of the nodes (LAMMPS' pair exclusions) follow the new topology.
    Rebuilt before the atoms are exchanged at the reneighbouring a break asks for: in the
    middle of a step the rebuild disturbed the ghost atoms' data (2 ranks lost atoms). */
 void FixWire::pre_exchange()
 {
+  keep_memories_with_atoms();
   if (!specials_stale) return;
   Special special(lmp);
   special.build();

@@ -14,9 +14,9 @@
 
 /* fix wire's input and output: LAMMPS' communication of wire nodes and grains (forward,
    reverse, with the periodic shift of positions), the per-atom Gear states (grow, copy,
-   exchange, restart, rescaling to a new substep), the hand-over of contact memories
-   between ranks, the global restart block of contact memories, the memory use, the
-   timing report after a run and the contact rows of compute wire/contacts. */
+   exchange, restart, rescaling to a new substep), the contacts' friction memories kept with
+   the atoms that compute them, the global restart block, the memory use, the timing
+   report after a run and the contact rows of compute wire/contacts. */
 
 #include "fix_wire.h"
 #include "fix_wire_lib.h"
@@ -29,7 +29,6 @@
 #include "error.h"
 #include "memory.h"
 #include "nscd_checks.h"
-#include "nscd_gather.h"
 #include "nscd_restart_blocks.h"
 #include "nscd_timing.h"
 #include "timer.h"
@@ -123,45 +122,85 @@ void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
 
 /* ---------------------------------------------------------------------- per-atom state */
 
-void FixWire::grow_arrays(int nmax) { memory->grow(gear, nmax, kGearColumns, "wire:gear"); }
-void FixWire::copy_arrays(int i, int j, int /*delflag*/) { std::copy(gear[i], gear[i] + kGearColumns, gear[j]); }
-void FixWire::set_arrays(int i) { std::fill(gear[i], gear[i] + kGearColumns, 0.0); }
-int FixWire::size_restart(int /*nlocal*/) { return kGearColumns + 1; }
-int FixWire::maxsize_restart() { return kGearColumns + 1; }
+/* Per atom: the Gear state (kGearColumns values) and the friction memories of the contacts
+   the atom computes (lib->atom_memories, while they are kept with the atoms). */
+void FixWire::grow_arrays(int nmax)
+{
+  memory->grow(gear, nmax, kGearColumns, "wire:gear");
+  lib->atom_memories.grow(nmax);
+}
+
+/* delflag: atom i is deleted (exchange, delete_atoms): its memories move, not copy. */
+void FixWire::copy_arrays(int i, int j, int delflag)
+{
+  std::copy(gear[i], gear[i] + kGearColumns, gear[j]);
+  lib->atom_memories.copy(i, j);
+  if (delflag && i != j) lib->atom_memories.clear(i);
+}
+
+void FixWire::set_arrays(int i)
+{
+  std::fill(gear[i], gear[i] + kGearColumns, 0.0);
+  lib->atom_memories.clear(i);
+}
 
 int FixWire::pack_exchange(int i, double *buf)
 {
   std::copy(gear[i], gear[i] + kGearColumns, buf);
-  return kGearColumns;
+  return kGearColumns + lib->atom_memories.pack(i, buf + kGearColumns);
 }
 
 int FixWire::unpack_exchange(int nlocal, double *buf)
 {
   std::copy(buf, buf + kGearColumns, gear[nlocal]);
-  return kGearColumns;
+  lib->atom_memories.clear(nlocal);
+  const int m = kGearColumns + lib->atom_memories.unpack_append(nlocal, buf + kGearColumns);
+  maxexchange = std::max(maxexchange, m);    // this rank may pass the atom on before the next filing
+  return m;
+}
+
+/* Per atom in restart files: {number of values (LAMMPS' convention), the Gear state, the
+   atom's friction memories in nscd_restart's per-atom format}. */
+int FixWire::size_restart(int i)
+{
+  return 1 + kGearColumns + nscd_restart::atom_memories_values(lib->atom_memories.of(i).size());
+}
+
+int FixWire::maxsize_restart()
+{
+  const int mine = 1 + kGearColumns + nscd_restart::atom_memories_values(lib->atom_memories.longest(0, atom->nlocal));
+  int all = mine;
+  MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
+  return all;
 }
 
 int FixWire::pack_restart(int i, double *buf)
 {
-  buf[0] = kGearColumns + 1;    // LAMMPS convention: the count includes this slot
+  buf[0] = size_restart(i);    // LAMMPS convention: the count includes this slot
   std::copy(gear[i], gear[i] + kGearColumns, buf + 1);
-  return kGearColumns + 1;
+  nscd_restart::write_atom_memories(lib->atom_memories.of(i), buf + 1 + kGearColumns);
+  return (int) buf[0];
 }
 
 /* The atom's values of the nth fix in atom->extra, each fix's preceded by its count (this
-   fix's: kGearColumns + 1). A count or state that cannot be is refused, naming the atom. */
+   fix's: 1 + kGearColumns, then the memories' values; files of wire format 3 and older
+   have no memories per atom). A count, state or memory that cannot be is refused, naming
+   the atom. */
 void FixWire::unpack_restart(int nlocal, int nth)
 {
   const double *extra = atom->extra[nlocal];
   const int width = atom->nextra_store;
+  constexpr int gear_only = 1 + kGearColumns, least_with_memories = gear_only + nscd_restart::atom_memories_values(0);
   int m = 0;
   for (int k = 0; k <= nth; k++) {
     const double count = m < width ? extra[m] : 0.0;
     const bool mine = k == nth;
-    if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) || (mine && count != kGearColumns + 1))
+    if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) ||
+        (mine && count != gear_only && count < least_with_memories))
       error->one(FLERR, "fix wire {}: the restart file's per-atom values of atom ID {} are damaged (a count of {} "
                  "where {} fit); define fix wire with another ID to start without them", id, atom->tag[nlocal],
-                 count, mine ? kGearColumns + 1 : width - m);
+                 count, mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m) :
+                 fmt::format("{}", width - m));
     if (!mine) m += (int) count;
   }
   const double *state = extra + m + 1;
@@ -172,6 +211,16 @@ void FixWire::unpack_restart(int nlocal, int nth)
                  "it is damaged; define fix wire with another ID to start without it", id, atom->tag[nlocal],
                  state[c], c + 1, kGearColumns);
   std::copy(state, state + kGearColumns, gear[nlocal]);
+  if (extra[m] == gear_only) return;    // wire format 3 or older: restart() kept the atom's memories
+  try {
+    const auto values = (std::size_t) extra[m] - gear_only;
+    lib->atom_memories.set(nlocal, nscd_restart::read_atom_memories(state + kGearColumns, values, atom->tag[nlocal]));
+  } catch (nscd_restart::Damaged &e) {
+    error->one(FLERR, "fix wire {}: the friction memories in the restart file cannot be used: {}. To start without "
+               "them, define fix wire with another ID", id, e.what());
+  }
+  maxexchange = std::max(maxexchange, kGearColumns + lib->atom_memories.values(nlocal));
+  memories_with_atoms = true;
 }
 
 /* The stored Gear states rescaled to a new substep (a new timestep or substep count). */
@@ -187,23 +236,74 @@ void FixWire::rescale_states(double new_dt)
   state_dt = new_dt;
 }
 
-/* After atoms moved between ranks, each contact memory goes to the rank that now computes
-   its contact: the owner of the key's first node. Only the memories whose node left travel
-   (one gather over the ranks). After read_restart every rank holds all: each keeps its own. */
-void FixWire::hand_over_memories()
+/* ---------------------------------------------------------------------- friction memories */
+
+/* Before atoms move (pre_exchange on a list rebuild, the end of a run, a restart file):
+   each friction memory of the contact model goes to the atom whose owner computes its
+   contact, the node of its key's first ID, which this rank owns (it computed the contact).
+   The memories then travel with their atoms (exchange, restart files): no communication of
+   their own. */
+void FixWire::keep_memories_with_atoms()
 {
-  auto owned_here = [&](std::int64_t t) {
-    const int i = atom->map((tagint) t);
-    return i >= 0 && i < atom->nlocal;
-  };
-  const bool send = comm->nprocs > 1 && !memories_on_every_rank;
-  const std::vector<wire::StoredContact> leaving = lib->contacts->take_memories_unless(owned_here);
-  memories_on_every_rank = false;
-  if (!send) return;
-  std::vector<wire::StoredContact> arriving;
-  for (const wire::StoredContact &c : gather_records(leaving, world, true))
-    if (owned_here(c.key[0])) arriving.push_back(c);
-  lib->contacts->add_memories(arriving);
+  if (!lib->contacts || memories_with_atoms) return;    // none, or the atoms hold them already
+  const std::vector<wire::StoredContact> memories =
+      lib->contacts->take_memories_unless([](std::int64_t) { return false; });
+  const int nall = atom->nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) lib->atom_memories.clear(i);
+  for (const wire::StoredContact &c : memories) {
+    // an atom a fix deleted before this one's pre_exchange takes its contacts' memories along
+    const int i = atom->map((tagint) c.key[0]);
+    if (i >= 0 && i < atom->nlocal) lib->atom_memories.add(i, c);
+  }
+  memories_with_atoms = true;
+  maxexchange = kGearColumns + lib->atom_memories.values_for(lib->atom_memories.longest(0, atom->nlocal));
+}
+
+/* After the atoms moved: the owned atoms' memories go back into the contact model, found by
+   key at its next list build (ghost slots may hold copies of atoms that left: emptied). */
+void FixWire::take_memories_from_atoms()
+{
+  std::vector<wire::StoredContact> held;
+  lib->atom_memories.move_all(0, atom->nlocal, held);
+  for (int i = atom->nlocal; i < atom->nlocal + atom->nghost; i++) lib->atom_memories.clear(i);
+  lib->contacts->add_memories(held);
+  memories_with_atoms = false;
+}
+
+/* A restart file of wire format 3 holds every contact's memory in the global block: each
+   rank keeps those of the nodes it owns, as if they had been written per atom. */
+void FixWire::keep_restored_memories(const std::vector<wire::StoredContact> &memories)
+{
+  for (const wire::StoredContact &c : memories) {
+    const int i = atom->map((tagint) c.key[0]);
+    if (i >= 0 && i < atom->nlocal) lib->atom_memories.add(i, c);
+  }
+  memories_with_atoms = true;
+  maxexchange = kGearColumns + lib->atom_memories.values_for(lib->atom_memories.longest(0, atom->nlocal));
+}
+
+bool FixWire::owned_here(tagint tag) const
+{
+  const int i = atom->map(tag);
+  return i >= 0 && i < atom->nlocal;
+}
+
+size_t FixWire::wire_memories_held() const
+{
+  return lib->atom_memories.count(0, atom->nlocal + atom->nghost) +
+      (lib->contacts ? lib->contacts->memories().size() : 0);
+}
+
+size_t FixWire::wire_memories_of_other_ranks() const
+{
+  size_t foreign = lib->atom_memories.count(atom->nlocal, atom->nghost);
+  for (int i = 0; i < atom->nlocal; i++)
+    for (const wire::StoredContact &c : lib->atom_memories.of(i))
+      if (!owned_here((tagint) c.key[0])) foreign++;
+  if (lib->contacts)
+    for (const wire::StoredContact &c : lib->contacts->memories())
+      if (!owned_here((tagint) c.key[0])) foreign++;
+  return foreign;
 }
 
 /* The per-atom Gear states, the atom indices, the node arrays of the subcycle, the
@@ -217,26 +317,25 @@ double FixWire::memory_usage()
       capacity_bytes(elements) + capacity_bytes(grain_force_buffer) + capacity_bytes(nodes.state) +
       capacity_bytes(nodes.mass) + capacity_bytes(nodes.fixed) + capacity_bytes(nodes.positions) +
       capacity_bytes(nodes.velocities) + capacity_bytes(nodes.forces) + capacity_bytes(lib->step.external) +
-      capacity_bytes(lib->step_start) + capacity_bytes(lib->restored);
+      capacity_bytes(lib->step_start) + lib->atom_memories.memory_bytes();
   for (const auto &r : nodes.arrays.r) bytes += capacity_bytes(r);
   if (lib->contacts) bytes += lib->contacts->memory_bytes();
   return (double) atom->nmax * kGearColumns * sizeof(double) + (double) bytes;
 }
 
-/* Global restart: the step of the stored Gear states and the contact memories of all ranks
-   (format: nscd_restart_blocks.h). */
+/* Global restart: the step of the stored Gear states (format: nscd_restart_blocks.h); the
+   friction memories are written per atom (pack_restart), after this call has handed them to
+   the atoms. */
 void FixWire::write_restart(FILE *fp)
 {
-  std::vector<wire::StoredContact> mine;
-  // Read from a restart and no step since: every rank holds them all; write them once.
-  if (!memories_on_every_rank || comm->me == 0) mine = lib->contacts ? lib->contacts->memories() : lib->restored;
+  keep_memories_with_atoms();
   nscd_restart::WireBlock block;
-  block.memories = gather_records(mine, world, false);
   block.dt = state_dt;
   if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::wire_block(block));
 }
 
-/* read_restart hands every rank the whole block; hand_over_memories() keeps the own ones. */
+/* read_restart hands every rank the block written above (without its size). A file of
+   format 3 holds every contact's memory here: each rank keeps those of its own nodes. */
 void FixWire::restart(char *bytes)
 {
   nscd_restart::WireBlock block = nscd_checks::read_restart_block(
@@ -248,8 +347,7 @@ void FixWire::restart(char *bytes)
                                       ": its contacts' friction springs are not read (they start again from zero)");
     return;
   }
-  lib->restored = std::move(block.memories);
-  memories_on_every_rank = true;
+  if (!block.memories.empty()) keep_restored_memories(block.memories);
 }
 
 /* ---------------------------------------------------------------------- timing report */
@@ -258,6 +356,7 @@ void FixWire::restart(char *bytes)
    the time per node per substep, and the bytes sent per substep. */
 void FixWire::post_run()
 {
+  keep_memories_with_atoms();    // between runs atoms may move (balance, delete_atoms, ...)
   if (substeps_run == 0) return;
   const wire::StepTiming &t = lib->timing;
   timing[T_CONTACTS] = t.contacts;

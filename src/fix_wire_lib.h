@@ -19,6 +19,7 @@
 #define LMP_FIX_WIRE_LIB_H
 
 #include "fix_wire.h"
+#include "nscd_atom_records.h"
 #include "nscd_boundary.h"
 #include "wire/contact_model.h"
 #include "wire/wire_step.h"
@@ -51,7 +52,9 @@ struct FixWire::Lib : nscd::wire::Exchange {
   nscd::wire::StepTiming timing;
   std::vector<BoundaryView> boundaries;
   std::vector<nscd::Vec3> step_start;
-  std::vector<nscd::wire::StoredContact> restored;    // from a restart file, for the contact model
+  // The friction memories kept with the atoms (owned atoms, by the key's first ID) while
+  // atoms move between ranks and in restart files; memories_with_atoms says when.
+  NSCDAtomRecords<nscd::wire::StoredContact> atom_memories;
   explicit Lib(FixWire *f) : fix(f) {}
   // The subcycle's communication, wire nodes only: positions and velocities to the ghost
   // copies, their forces back to the owners.

@@ -69,6 +69,21 @@ template <class Style> void refuse_second_instance(LAMMPS *lmp, const Fix *fix, 
                       other->id, fix->id, why_one);
 }
 
+// Stops if a fix that moves atoms between ranks in its pre_exchange (fix balance, ...) is
+// defined before `fix`, which hands `what` (contact state kept with the atoms) to the atoms
+// in its own pre_exchange, by where they were at the last step: atoms that left before it
+// would lose theirs.
+inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *what)
+{
+  for (const Fix *other : lmp->modify->get_fix_list()) {
+    if (other == fix) return;
+    if (other->pre_exchange_migrate)
+      lmp->error->all(FLERR, "fix {} {} must be defined before fix {} {}, which moves atoms between ranks before "
+                      "fix {} can hand {} to them; define fix {} after fix {}", fix->style, fix->id, other->style,
+                      other->id, fix->style, what, other->id, fix->style);
+  }
+}
+
 // read(bytes, size) from nscd_restart_blocks.h on the block LAMMPS hands Fix::restart(), or
 // an error naming the fix, what is wrong with the block and `way_out` (how to start without
 // it) if it is damaged.

@@ -134,38 +134,69 @@ SolverBlock read_solver_block(const char *block, std::size_t available)
   return out;
 }
 
+namespace {
+// How one kind of per-atom record is named in the messages of read_atom_records.
+struct AtomRecordNames {
+  const char *values;     // "warm-start values"
+  const char *held;       // "its warm-start impulses"
+  const char *records;    // "warm-start records"
+  const char *record;     // "warm-start record"
+};
+
+// {format, count, count records} of one atom (nscd_restart_blocks.h, "per atom").
+template <class Record> void write_atom_records(std::int32_t format, const std::vector<Record> &records, double *out)
+{
+  out[0] = format;
+  out[1] = (double) records.size();
+  if (!records.empty()) std::memcpy(out + 2, records.data(), records.size() * sizeof(Record));
+}
+
+// What write_atom_records wrote, `available` values, for the atom of ID `tag`: each record
+// checked by check(record, index) and belonging to that atom (owner(record) == tag).
+template <class Record, class Check, class Owner>
+std::vector<Record> read_atom_records(const double *values, std::size_t available, std::int64_t tag,
+                                      std::int32_t format_read, const AtomRecordNames &names, Check check,
+                                      Owner owner)
+{
+  constexpr int per_record = (int) (sizeof(Record) / sizeof(double));
+  const std::string atom = "atom ID " + std::to_string(tag);
+  if (available < 2)
+    throw Damaged(atom + " has " + std::to_string(available) + " " + names.values +
+                  ", fewer than the 2 of its header: the file is damaged");
+  const double format = values[0], count = values[1];
+  if (format != format_read)
+    throw Damaged(atom + " holds " + names.held + " in format " + number(format) +
+                  (format > format_read && format <= kNewestKnown && format == std::floor(format)
+                       ? ", this build reads format " + std::to_string(format_read) + "; use a newer build"
+                       : ", which no build writes: the file is damaged"));
+  if (!(count >= 0.0) || count != std::floor(count) || count > (double) (available - 2) / per_record ||
+      2 + per_record * (std::size_t) count != available)
+    throw Damaged(atom + " states " + number(count) + " " + names.records + " in " + std::to_string(available) +
+                  " values: the file is damaged");
+  std::vector<Record> records((std::size_t) count);
+  if (!records.empty()) std::memcpy(records.data(), values + 2, records.size() * sizeof(Record));
+  for (std::size_t k = 0; k < records.size(); k++) {
+    check(records[k], k);
+    if (owner(records[k]) != tag)
+      throw Damaged(atom + "'s " + names.record + " " + std::to_string(k + 1) + " belongs to atom ID " +
+                    std::to_string(owner(records[k])) + ": the file is damaged");
+  }
+  return records;
+}
+}    // namespace
+
 void write_atom_impulses(const std::vector<nscd::ImpulseRecord> &records, double *out)
 {
-  out[0] = kAtomImpulsesFormat;
-  out[1] = (double) records.size();
-  if (!records.empty()) std::memcpy(out + 2, records.data(), records.size() * sizeof(nscd::ImpulseRecord));
+  write_atom_records(kAtomImpulsesFormat, records, out);
 }
 
 std::vector<nscd::ImpulseRecord> read_atom_impulses(const double *values, std::size_t available, std::int64_t tag)
 {
-  if (available < 2)
-    throw Damaged("atom ID " + std::to_string(tag) + " has " + std::to_string(available) +
-                  " warm-start values, fewer than the 2 of its header: the file is damaged");
-  const double format = values[0], count = values[1];
-  if (format != kAtomImpulsesFormat)
-    throw Damaged("atom ID " + std::to_string(tag) + " holds its warm-start impulses in format " + number(format) +
-                  (format > kAtomImpulsesFormat && format <= kNewestKnown && format == std::floor(format)
-                       ? ", this build reads format " + std::to_string(kAtomImpulsesFormat) + "; use a newer build"
-                       : ", which no build writes: the file is damaged"));
-  if (!(count >= 0.0) || count != std::floor(count) ||
-      count > (double) (available - 2) / kValuesPerImpulseRecord ||
-      (std::size_t) atom_impulses_values((std::size_t) count) != available)
-    throw Damaged("atom ID " + std::to_string(tag) + " states " + number(count) + " warm-start records in " +
-                  std::to_string(available) + " values: the file is damaged");
-  std::vector<nscd::ImpulseRecord> records((std::size_t) count);
-  if (!records.empty()) std::memcpy(records.data(), values + 2, records.size() * sizeof(nscd::ImpulseRecord));
-  for (std::size_t k = 0; k < records.size(); k++) {
-    check_impulse_record(records[k], k);
-    if (records[k].tag_i != tag)
-      throw Damaged("atom ID " + std::to_string(tag) + "'s warm-start record " + std::to_string(k + 1) +
-                    " belongs to atom ID " + std::to_string(records[k].tag_i) + ": the file is damaged");
-  }
-  return records;
+  static const AtomRecordNames names{"warm-start values", "its warm-start impulses", "warm-start records",
+                                     "warm-start record"};
+  return read_atom_records<nscd::ImpulseRecord>(values, available, tag, kAtomImpulsesFormat, names,
+                                                check_impulse_record,
+                                                [](const nscd::ImpulseRecord &r) { return r.tag_i; });
 }
 
 // ---------------------------------------------------------------------- fix wire
@@ -210,6 +241,21 @@ WireBlock read_wire_block(const char *block, std::size_t available)
   in.expect_end();
   for (std::size_t k = 0; k < out.memories.size(); k++) check_stored_contact(out.memories[k], k);
   return out;
+}
+
+void write_atom_memories(const std::vector<nscd::wire::StoredContact> &memories, double *out)
+{
+  write_atom_records(kAtomMemoriesFormat, memories, out);
+}
+
+std::vector<nscd::wire::StoredContact> read_atom_memories(const double *values, std::size_t available,
+                                                          std::int64_t tag)
+{
+  static const AtomRecordNames names{"wire memory values", "its wire friction memories", "wire friction memories",
+                                     "wire friction memory"};
+  return read_atom_records<nscd::wire::StoredContact>(values, available, tag, kAtomMemoriesFormat, names,
+                                                      check_stored_contact,
+                                                      [](const nscd::wire::StoredContact &c) { return c.key[0]; });
 }
 
 // ---------------------------------------------------------------------- fix nscd/wall

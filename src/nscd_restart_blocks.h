@@ -62,11 +62,14 @@ void write_atom_impulses(const std::vector<nscd::ImpulseRecord> &records, double
 // Reads what write_atom_impulses wrote, `available` values, for the atom of ID `tag`.
 std::vector<nscd::ImpulseRecord> read_atom_impulses(const double *values, std::size_t available, std::int64_t tag);
 
-// ---- fix wire: the step of the stored Gear states and the contacts' friction memories.
-// Format 3 (sized): {double dt, int64 count, count StoredContacts}. Format 2 (before the
-// common header: the double -2, dt, the count as a double, the records) is recognised: dt
-// is read, the memories are not.
-constexpr std::int32_t kWireFormat = 3;
+// ---- fix wire: the step of the stored Gear states (and, up to format 3, the contacts'
+// friction memories). Format 4 (sized): {double dt, int64 count, count StoredContacts}; fix
+// wire writes count 0: the memories are kept per atom (below). Format 3: the same layout
+// with every contact's memory (files written before the memories were kept with the atoms;
+// read, and each rank keeps those of the nodes it owns). Format 2 (before the common
+// header: the double -2, dt, the count as a double, the records) is recognised: dt is read,
+// the memories are not.
+constexpr std::int32_t kWireFormat = 4;
 struct WireBlock {
   std::int32_t format = kWireFormat;
   bool memories_read = true;
@@ -75,6 +78,17 @@ struct WireBlock {
 };
 std::string wire_block(const WireBlock &state);
 WireBlock read_wire_block(const char *block, std::size_t available);
+
+// ---- fix wire, per atom, after the atom's Gear state: the friction memories of the contacts
+// the atom computes (key[0] = its ID: an element's first node, or a node on a boundary).
+// Format 1: {double format, double count, count x 14 doubles (the 112 bytes of a
+// StoredContact)}. Files of wire format 3 and older hold the Gear state alone.
+constexpr std::int32_t kAtomMemoriesFormat = 1;
+constexpr int kValuesPerStoredContact = sizeof(nscd::wire::StoredContact) / sizeof(double);
+constexpr int atom_memories_values(std::size_t count) { return 2 + kValuesPerStoredContact * (int) count; }
+void write_atom_memories(const std::vector<nscd::wire::StoredContact> &memories, double *out);
+std::vector<nscd::wire::StoredContact> read_atom_memories(const double *values, std::size_t available,
+                                                          std::int64_t tag);
 
 // ---- fix nscd/wall: the wall's kind (0 plane, 1 cylinder) and reference point.
 // Format 2 (sized): 4 doubles; format 1: the same 4 doubles without the size.

@@ -30,6 +30,17 @@
 #include <string>
 #include <vector>
 
+// The rank of `world` owning the atom of this ID in `lmp` (-1 if none), on every rank of it.
+inline int owner_of(LAMMPS_NS::LAMMPS *lmp, LAMMPS_NS::tagint tag, MPI_Comm world)
+{
+  const int i = lmp->atom->map(tag);
+  int me = 0, mine = -1, owner = -1;
+  MPI_Comm_rank(world, &me);
+  if (i >= 0 && i < lmp->atom->nlocal) mine = me;
+  MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MAX, world);
+  return owner;
+}
+
 // A shape library of a unit cube (shape 1), a rounded cube (2) and a ball (3, one vertex),
 // all of isotropic inertia and size 1.
 inline constexpr const char *kIsotropicShapes = R"(shape cube

@@ -24,6 +24,7 @@
 #include "nscd_restart.h"
 #include "nscd_restart_blocks.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -592,7 +593,7 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
     ASSERT_NE(wall, std::string::npos);
     ASSERT_NE(plate, std::string::npos);
     EXPECT_EQ(get<std::int64_t>(original, solver + 16), 0) << "contact records (per atom since format 4)";
-    EXPECT_GT(get<std::int64_t>(original, wire + 24), 0) << "wire memories";
+    EXPECT_EQ(get<std::int64_t>(original, wire + 24), 0) << "wire memories (per atom since format 4)";
   }
   // header: mark (8 bytes), payload size (8); fix nscd: count (8), dt (8), records;
   // fix wire: dt (8), count (8), records
@@ -622,14 +623,12 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
        {"fix wire w", "does not begin with this package's mark"}},
       {"fix wire: count too large", [&](std::string &b) { put<std::int64_t>(b, wire + 24, 1ll << 40); },
        {"fix wire w", "counts 1099511627776 contact memories"}},
-      {"fix wire: format 4", [&](std::string &b) { put<std::int32_t>(b, wire + 4, 4); },
-       {"fix wire w", "format 4", "up to 3"}},
+      {"fix wire: format 5", [&](std::string &b) { put<std::int32_t>(b, wire + 4, 5); },
+       {"fix wire w", "format 5", "up to 4"}},
       {"fix wire: a NaN substep", [&](std::string &b) { put<double>(b, wire + 16, NAN); },
        {"fix wire w", "substep is nan"}},
       {"fix wire: a denormal substep", [&](std::string &b) { put<double>(b, wire + 16, 5e-315); },
        {"fix wire w", "substep is 5.00000000228"}},
-      {"fix wire: a weight of 7", [&](std::string &b) { put<double>(b, wire + 32 + 32 + 64, 7.0); },
-       {"fix wire w", "end weight 7"}},
       {"fix nscd/wall: foreign mark", [&](std::string &b) { put<std::int32_t>(b, wall, 12345); },
        {"fix nscd/wall floor", "does not begin with this package's mark"}},
       {"fix nscd/wall: format 3", [&](std::string &b) { put<std::int32_t>(b, wall + 4, 3); },
@@ -721,7 +720,7 @@ TEST_F(RestartDamageTest, PreviousFormatsAreReadOrSkippedByName)
     old.append(reinterpret_cast<const char *>(&dt), 8).append(b, at + 32, count * 48);
     put<int>(b, at - 4, (int) old.size());
     b.replace(at, 32 + count * 48, old);
-    // fix wire 3 -> 2: {-2.0, dt, count as a double, records}
+    // fix wire 4 -> 2: {-2.0, dt, count as a double, records}
     at = fix_block(b, "w", "wire");
     const std::int64_t memories = get<std::int64_t>(b, at + 24);
     const double header[3] = {-2.0, get<double>(b, at + 16), (double) memories};
@@ -785,8 +784,22 @@ TEST_F(RestartDamageTest, DamagedPerAtomValuesAreRefusedNamingTheAtom)
 {
   if (ranks() > 1) GTEST_SKIP() << "error->one on the owning rank: serial check";
   write_scene();
-  const int i = lmp->atom->map(2);    // a wire node: its Gear state begins with its position
-  const double start[4] = {20.0, lmp->atom->x[i][0], lmp->atom->x[i][1], lmp->atom->x[i][2]};
+  // fix wire's values of a node: its count (20, + 2 + 14 per memory from wire format 4 on),
+  // its Gear state (beginning with its position), then its friction memories {format,
+  // count, records}: node 2 is off the cube and holds none, the lowest node ID on the cube
+  // (`held`) computes a contact with it and holds its memory
+  LAMMPS_NS::Fix *fix_wire = lmp->modify->get_fix_by_id("w");
+  auto values_of = [&](LAMMPS_NS::tagint id) {
+    const int k = lmp->atom->map(id);
+    return std::array<double, 4>{(double) fix_wire->size_restart(k), lmp->atom->x[k][0], lmp->atom->x[k][1],
+                                 lmp->atom->x[k][2]};
+  };
+  const std::array<double, 4> node_2 = values_of(2);
+  EXPECT_EQ(node_2[0], 20 + 2);
+  LAMMPS_NS::tagint held = 3;
+  while (held < lmp->atom->natoms && values_of(held)[0] < 20 + 2 + 14) held++;
+  const std::array<double, 4> node_held = values_of(held);
+  ASSERT_GE(node_held[0], 20 + 2 + 14) << "no node holds a friction memory";
   const double mass = 1.2345678901234567;
   const size_t at_mass = original.find(std::string(reinterpret_cast<const char *>(&mass), 8));
   ASSERT_NE(at_mass, std::string::npos);
@@ -795,11 +808,28 @@ TEST_F(RestartDamageTest, DamagedPerAtomValuesAreRefusedNamingTheAtom)
   message = error_after([&](std::string &b) { put<double>(b, at_mass, NAN); });
   EXPECT_TRUE(has(message, "atom ID 1: mass nan")) << message;
 
-  // fix wire's values of node ID 2: its count (20), then its Gear state
-  const size_t gear = original.find(std::string(reinterpret_cast<const char *>(start), sizeof(start)));
+  auto find = [&](const std::array<double, 4> &values) {
+    return original.find(std::string(reinterpret_cast<const char *>(values.data()), sizeof(values)));
+  };
+  const size_t gear = find(node_2);
   ASSERT_NE(gear, std::string::npos);
   message = error_after([&](std::string &b) { put<double>(b, gear, 1e9); });
   EXPECT_TRUE(has(message, "fix wire w: the restart file's per-atom values of atom ID 2 are damaged")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, gear, 21.0); });    // a memory header cut short
+  EXPECT_TRUE(has(message, "per-atom values of atom ID 2 are damaged (a count of 21 where 20 or 22 to")) << message;
   message = error_after([&](std::string &b) { put<double>(b, gear + 8 * 5, NAN); });
   EXPECT_TRUE(has(message, "Gear state of atom ID 2 holds nan (value 5 of 19)")) << message;
+  const size_t memories = find(node_held) + 8 * 20;    // after the count and the Gear state
+  ASSERT_NE(memories, std::string::npos + 8 * 20);
+  const std::string atom = "atom ID " + std::to_string(held);
+  message = error_after([&](std::string &b) { put<double>(b, memories, 2.0); });
+  EXPECT_TRUE(has(message, "fix wire w: the friction memories in the restart file cannot be used: " + atom +
+                           " holds its wire friction memories in format 2, this build reads format 1")) << message;
+  message = error_after([&](std::string &b) { put<double>(b, memories + 8 * (2 + 4 + 8), 7.0); });    // weight[0]
+  EXPECT_TRUE(has(message, "wire contact memory 1 has an end weight 7 outside [0, 1]")) << message;
+  message = error_after([&](std::string &b) { put<std::int64_t>(b, memories + 8 * 2, held + 1); });    // key[0]
+  EXPECT_TRUE(has(message, atom + "'s wire friction memory 1 belongs to atom ID " + std::to_string(held + 1))) << message;
+  // and the undamaged file reads and runs on
+  EXPECT_EQ(error_after([](std::string &) {}), "");
+  EXPECT_EQ(error_of("run 2"), "");
 }

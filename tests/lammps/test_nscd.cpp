@@ -851,17 +851,6 @@ TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
 
 // ---- warm-start impulses kept with their atoms (doc/fix_nscd.md, "Restart") ----
 
-// The rank owning the atom of this ID (-1 if none), on every rank of `world`.
-static int owner_of(LAMMPS *lmp, tagint tag, MPI_Comm world)
-{
-  const int i = lmp->atom->map(tag);
-  int me = 0, mine = -1, owner = -1;
-  MPI_Comm_rank(world, &me);
-  if (i >= 0 && i < lmp->atom->nlocal) mine = me;
-  MPI_Allreduce(&mine, &owner, 1, MPI_INT, MPI_MAX, world);
-  return owner;
-}
-
 // Warm-start records held by the ranks of `world`: {summed, most on one rank, summed of
 // those concerning no atom of the holding rank}.
 static std::array<double, 3> warm_start_holdings(FixNSCD *fix, MPI_Comm world)

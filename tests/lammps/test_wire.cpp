@@ -478,6 +478,185 @@ TEST_F(WireOnGrainTest, RestartMovesBetweenRankCounts)
   }
 }
 
+// ---- friction memories kept with their atoms (doc/fix_wire.md, "Restart") ----
+
+// Friction memories held by the ranks of `world`: {summed, most on one rank, summed of those
+// whose contact the holding rank does not compute (its first node owned elsewhere)}.
+static std::array<double, 3> memory_holdings(LAMMPS *lmp, MPI_Comm world)
+{
+  const auto *fix = dynamic_cast<FixWire *>(lmp->modify->get_fix_by_id("w"));
+  const double held = fix ? (double) fix->wire_memories_held() : 0.0;
+  const double foreign = fix ? (double) fix->wire_memories_of_other_ranks() : 0.0;
+  std::array<double, 3> out{};
+  MPI_Allreduce(&held, &out[0], 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&held, &out[1], 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&foreign, &out[2], 1, MPI_DOUBLE, MPI_SUM, world);
+  return out;
+}
+
+// The positions of atoms 1..n (3 n values), gathered to every rank of `world`.
+static std::vector<double> positions_of(LAMMPS *lmp, int n, MPI_Comm world)
+{
+  std::vector<double> mine(3 * n, 0.0), all(3 * n, 0.0);
+  for (int k = 1; k <= n; k++) {
+    const int i = lmp->atom->map(k);
+    if (i >= 0 && i < lmp->atom->nlocal)
+      for (int d = 0; d < 3; d++) mine[3 * (k - 1) + d] = lmp->atom->x[i][d];
+  }
+  MPI_Allreduce(mine.data(), all.data(), 3 * n, MPI_DOUBLE, MPI_SUM, world);
+  return all;
+}
+
+static double largest_difference(const std::vector<double> &a, const std::vector<double> &b)
+{
+  double most = 0.0;
+  for (size_t k = 0; k < a.size(); k++) most = std::max(most, std::fabs(a[k] - b[k]));
+  return most;
+}
+
+// A wire held by friction on a cube that a conveyor (fix move) carries at speed 5 across the
+// sub-domain cut at x = 0, wire and cube moving together: every node, and so the first node
+// of each element, which computes the element's contact with the cube and keeps its friction
+// memory, changes rank in the middle of the run (no node damping: it would brake the wire
+// against the conveyor; the contacts' dashpots settle it). Gravity tilted by 0.2 (below mu_s = 0.5)
+// stretches the tangential springs; without relative motion they stay as they are, so the
+// wire's force on the cube along x stays the weight's x component step after step. A memory
+// lost on the way restarts its spring from zero: the element lets go of its share of that
+// force and the wire slips back until the spring is stretched again. The memories are as
+// many after the crossing as before, and none is held by a rank that does not compute it.
+TEST_F(WireOnGrainTest, FrictionHistorySurvivesItsNodeChangingRankMidRun)
+{
+  std::vector<Point> atoms = straight_chain(5, 0.2, 0.01, -1.4, 0.55);
+  for (Point &p : atoms) p.y = 0.25;    // off the cut at y = 0 of 4 ranks
+  atoms.push_back({-1.0, 0.25, 0.0, 1.0, 2, 1});
+  scene(atoms, 5, true, 100.0, 0.2, 0.05);
+  commands({"group wire id 1:5", "group cube id 6", "fix g wire gravity 1.0 vector 0.2 0 -1",
+            "fix w wire wire radius 0.05 k_n 1000 gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.5 mu_d 0.4",
+            "run 2000"});
+  const double resting = fix_value("w", 7);    // the wire's force on the cube along x, at rest
+  const std::array<double, 3> before = memory_holdings(lmp, MPI_COMM_WORLD);
+  const int owner_before = owner_of(lmp, 1, MPI_COMM_WORLD);
+  commands({"velocity wire set 5 0 0", "velocity cube set 5 0 0", "fix conveyor cube move linear 5 0 0",
+            "fix fx all print 1 \"$(f_w[8]:%.17g)\" file " + scratch("fx") + " screen no", "run 400", "unfix fx"});
+  const std::array<double, 3> after = memory_holdings(lmp, MPI_COMM_WORLD);
+  const int owner_after = owner_of(lmp, 1, MPI_COMM_WORLD);
+  EXPECT_NEAR(position(6)[0], 1.0, 1e-9);
+  for (int k = 1; k <= 5; k++) EXPECT_NEAR(position(k)[0] - position(6)[0], -0.4 + 0.2 * (k - 1), 1e-3) << "node " << k;
+  std::ifstream in(scratch("fx"));
+  std::string line;
+  double most = 0.0;
+  int steps = 0;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#') most = std::max(most, std::fabs(std::stod(line) - resting)), steps++;
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: node 1 on rank %d -> %d; force on the cube along x %.6g at rest, off by "
+                "at most %.3g over the crossing; memories %g -> %g (most on one rank %g, of other ranks %g)\n",
+                ranks(), owner_before, owner_after, resting, most, before[0], after[0], after[1], after[2]);
+  EXPECT_EQ(steps, 401);    // the run's setup and 400 steps
+  if (ranks() > 1) EXPECT_NE(owner_before, owner_after) << "the wire did not change rank";
+  EXPECT_GT(resting, 0.9 * 0.05 * 0.2 / std::sqrt(1.04));    // friction holds the weight's x component
+  EXPECT_LT(most, 1e-6 * resting);
+  EXPECT_GE(before[0], 4.0);    // one contact per element at least
+  EXPECT_EQ(after[0], before[0]);
+  EXPECT_EQ(after[2], 0.0);
+}
+
+// A restart written on all ranks of this run (4, or 2) is read on fewer ranks (2 and 1, on
+// their own communicators). Right after read_restart no rank holds a friction memory of a
+// contact it does not compute, the ranks hold as many memories between them as the writers
+// did, and none holds all when several own nodes that compute contacts; the next step and
+// 100 steps on, the nodes are where the uninterrupted run put them (to round-off: the sums
+// over ranks go in another order). Gravity tilted by 0.2 keeps the wire stuck on the cube
+// face by its springs, so a memory lost or doubled shows in the positions (by ~1e-7).
+TEST_F(WireOnGrainTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwnMemories)
+{
+  const std::vector<std::string> redefine = {
+      "neighbor 0.3 bin", "comm_modify cutoff 3.0", "fix g wire gravity 1.0 vector 0.2 0 -1",
+      "fix w wire wire radius 0.05 k_n 1000 gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.5 mu_d 0.4 damp 0.02"};
+  on_grain(0.0);
+  commands({redefine[2], "run 200", "write_restart " + scratch("written.restart")});
+  const std::array<double, 3> written = memory_holdings(lmp, MPI_COMM_WORLD);
+  EXPECT_EQ(written[2], 0.0);
+  EXPECT_GE(written[0], 4.0);
+  run("run 1");
+  const std::vector<double> first = positions_of(lmp, 5, MPI_COMM_WORLD);
+  run("run 99");
+  const std::vector<double> hundredth = positions_of(lmp, 5, MPI_COMM_WORLD);
+
+  for (int size : {2, 1}) {
+    if (size >= ranks()) continue;
+    MPI_Comm fewer;
+    MPI_Comm_split(MPI_COMM_WORLD, rank() < size ? 0 : MPI_UNDEFINED, 0, &fewer);
+    if (rank() < size) {
+      LAMMPS *all_ranks = lmp;
+      const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+      lmp = new LAMMPS(8, const_cast<char **>(argv), fewer);
+      commands({"processors * * 1", "read_restart " + scratch("written.restart")});
+      commands(redefine);
+      const std::array<double, 3> read = memory_holdings(lmp, fewer);
+      int owning = 0, ranks_owning = 0;
+      for (int i = 0; i < lmp->atom->nlocal; i++) owning |= lmp->atom->tag[i] <= 4;    // first nodes of elements
+      MPI_Allreduce(&owning, &ranks_owning, 1, MPI_INT, MPI_SUM, fewer);
+      EXPECT_EQ(read[2], 0.0) << size << " ranks: memories of other ranks' contacts";
+      EXPECT_EQ(read[0], written[0]) << size << " ranks";
+      if (ranks_owning > 1) EXPECT_LT(read[1], read[0]) << size << " ranks";
+      run("run 1");
+      const double off_first = largest_difference(positions_of(lmp, 5, fewer), first);
+      run("run 99");
+      const double off_hundredth = largest_difference(positions_of(lmp, 5, fewer), hundredth);
+      EXPECT_LT(off_first, 1e-12) << size << " ranks";
+      EXPECT_LT(off_hundredth, 1e-10) << size << " ranks";
+      if (rank() == 0)
+        std::printf("[ INFO     ] written on %d ranks: %g memories held; read on %d: %g held, at most %g on one "
+                    "rank, %g of other ranks' contacts; nodes off the uninterrupted run by %.3g after 1 step, "
+                    "%.3g after 100\n", ranks(), written[0], size, read[0], read[1], read[2], off_first,
+                    off_hundredth);
+      delete lmp;
+      lmp = all_ranks;
+      MPI_Comm_free(&fewer);
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+}
+
+// A restart file of wire format 3 (every contact's friction memory in the global block,
+// written before the memories were kept with the atoms: data/in.wire_format3, the wire on
+// the cube of WireOnGrainTest with its 4 memories, one per element) is still read: each
+// rank keeps the memories of the nodes it owns and none of other ranks' contacts, and 100
+// steps on the nodes are where the build that wrote the file put them
+// (data/wire_format3.after100; without the memories they differ by ~1e-7).
+TEST_F(WireTest, RestartOfFormat3IsReadIntoTheNodes)
+{
+  const std::string data = NSCD_TEST_DATA_DIR;
+  commands({"processors * * 1", "read_restart " + data + "/wire_format3.restart", "neighbor 0.3 bin",
+            "comm_modify cutoff 3.0", "fix g wire gravity 1.0 vector 0.2 0 -1",
+            "fix w wire wire radius 0.05 k_n 1000 gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.5 mu_d 0.4 damp 0.02"});
+  const std::array<double, 3> held = memory_holdings(lmp, MPI_COMM_WORLD);
+  int owning = 0, ranks_owning = 0;
+  for (int i = 0; i < lmp->atom->nlocal; i++) owning |= lmp->atom->tag[i] >= 2 && lmp->atom->tag[i] <= 5;
+  MPI_Allreduce(&owning, &ranks_owning, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(held[2], 0.0);
+  EXPECT_EQ(held[0], 4.0);
+  if (ranks_owning > 1) EXPECT_LT(held[1], held[0]);
+  run("run 100");
+  std::ifstream in(data + "/wire_format3.after100");
+  std::string line;
+  for (int k = 0; k < 9; k++) std::getline(in, line);    // the dump's header
+  double most = 0.0;
+  int nodes = 0;
+  for (tagint id; in >> id;) {
+    std::vector<double> expected(3);
+    for (double &x : expected) in >> x;
+    most = std::max(most, largest_difference(position(id), expected));
+    nodes++;
+  }
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: %g memories held, at most %g on a rank, %g of other ranks' contacts; nodes "
+                "off the writing build's by %.3g after 100 steps\n", ranks(), held[0], held[1], held[2], most);
+  EXPECT_EQ(nodes, 5);
+  EXPECT_LT(most, 1e-10);
+}
+
 TEST_F(WireTest, SubstepAboveTheStabilityLimitIsANamedError)
 {
   scene(straight_chain(11, 0.1, 0.01), 11, true, 1e4, 0.1, 1.0);
@@ -851,6 +1030,19 @@ TEST_F(CrossingWiresTest, AcrossAPeriodicBoundaryTheContactIsFoundOnceAndSticks)
               overlap, kNormal / kN, fix_value("w", 3), x3() - before);
   // sticking: the tangential spring only, 0.3 f_n / k_t = 3e-5 (without friction: ~ 0.7)
   EXPECT_NEAR(x3() - before, 0.3 * kNormal / 1e4, 1e-5);
+}
+
+// fix wire hands its memories to the atoms in its pre_exchange, by where they were at the
+// last step: a fix that moves atoms between ranks in its own pre_exchange (fix balance)
+// must come after it, and is refused by name before it.
+TEST_F(CrossingWiresTest, FixBalanceBeforeFixWireIsRefused)
+{
+  crossing();
+  commands({"unfix w", "fix lb all balance 100 1.0 shift x 10 1.0",
+            "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) + " mu_s 0.5"});
+  const std::string message = error_of("run 1");
+  EXPECT_NE(message.find("fix wire w must be defined before fix balance lb"), std::string::npos) << message;
+  commands({"unfix lb", "fix lb all balance 100 1.0 shift x 10 1.0", "run 1"});    // after it: fine
 }
 
 TEST_F(CrossingWiresTest, HistoryIsHandedOverWhenTheLastStepRebuiltTheLists)
