@@ -3,6 +3,11 @@
 # Our style headers are appended to the GLOBAL properties that LAMMPS' own
 # StyleHeaderUtils.cmake turns into style_*.h, before LAMMPS' cmake/ directory is added;
 # our sources are then added to the `lammps` target. Result: ${CMAKE_BINARY_DIR}/lmp.
+#
+# -DNSCD_INTREE_LAMMPS_DIR=<tree> instead builds the in-tree route: <tree> is a LAMMPS tree
+# holding the package as src/NSCD, lib/nscd and cmake/Modules/Packages/NSCD.cmake
+# (tools/build_intree.sh prepares it); LAMMPS compiles the package itself (-DPKG_NSCD=on),
+# with its own main(), and this project only adds the tests.
 
 set(LAMMPS_SOURCE_DIR "" CACHE PATH
     "LAMMPS source tree (the directory holding cmake/ and src/); empty = fetch Debian's")
@@ -11,6 +16,17 @@ set(NSCD_LAMMPS_RELEASE "4Feb2025" CACHE STRING
 set(NSCD_CACHE_DIR "$ENV{HOME}/.cache/nscd-lammps" CACHE PATH
     "Where tools/fetch_lammps.sh keeps the fetched LAMMPS source")
 
+set(NSCD_INTREE_LAMMPS_DIR "" CACHE PATH
+    "A LAMMPS tree with this package installed in-tree (tools/build_intree.sh); empty = the external build")
+if(NSCD_INTREE_LAMMPS_DIR)
+  if(NOT EXISTS "${NSCD_INTREE_LAMMPS_DIR}/src/NSCD" OR
+     NOT EXISTS "${NSCD_INTREE_LAMMPS_DIR}/cmake/Modules/Packages/NSCD.cmake")
+    message(FATAL_ERROR "NSCD_INTREE_LAMMPS_DIR=${NSCD_INTREE_LAMMPS_DIR} holds no NSCD package "
+                        "(src/NSCD, cmake/Modules/Packages/NSCD.cmake): prepare it with tools/build_intree.sh")
+  endif()
+  set(LAMMPS_SOURCE_DIR "${NSCD_INTREE_LAMMPS_DIR}" CACHE PATH "LAMMPS source tree" FORCE)
+  set(PKG_NSCD ON CACHE BOOL "The NSCD package, in-tree" FORCE)
+endif()
 if(NOT LAMMPS_SOURCE_DIR)
   message(STATUS "No LAMMPS_SOURCE_DIR given: fetching LAMMPS ${NSCD_LAMMPS_RELEASE} (Debian's "
                  "source package) into ${NSCD_CACHE_DIR}")
@@ -63,6 +79,17 @@ if(PKG_KSPACE OR PKG_ELECTRODE OR PKG_AMOEBA OR PKG_SCAFACOS)
   endif()
 endif()
 find_package(MPI REQUIRED)
+
+# The core library inside lmp, for tests that call lib/ next to LAMMPS: LAMMPS' private
+# lib/nscd in-tree, our nscd_core in the external build.
+if(NSCD_INTREE_LAMMPS_DIR)
+  set(NSCD_LAMMPS_CORE nscd)
+  add_subdirectory(${NSCD_LAMMPS_TREE}/cmake ${CMAKE_BINARY_DIR}/lammps)
+  set_target_properties(lmp PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
+  return()
+endif()
+
+set(NSCD_LAMMPS_CORE nscd_core)
 
 # Register our styles with LAMMPS' style-header generator.
 file(GLOB NSCD_PACKAGE_HEADERS CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*.h)

@@ -30,9 +30,12 @@ AngleStyle(wire,AngleWire);
 
 #include <vector>
 
-namespace nscd::wire {
+// Spelled out, not nscd::wire: LAMMPS core includes this header and may compile as C++11.
+namespace nscd {
+namespace wire {
 struct BendingForces;
-}    // namespace nscd::wire
+}    // namespace wire
+}    // namespace nscd
 
 namespace LAMMPS_NS {
 

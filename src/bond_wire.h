@@ -30,10 +30,13 @@ BondStyle(wire,BondWire);
 
 #include <vector>
 
-namespace nscd::wire {
+// Spelled out, not nscd::wire: LAMMPS core includes this header and may compile as C++11.
+namespace nscd {
+namespace wire {
 struct AxialLaw;
 struct AxialForces;
-}    // namespace nscd::wire
+}    // namespace wire
+}    // namespace nscd
 
 namespace LAMMPS_NS {
 
