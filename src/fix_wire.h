@@ -38,9 +38,11 @@ FixStyle(wire,FixWire);
 #include <string>
 #include <vector>
 
-namespace nscd::wire {
-struct StoredContact;
-}    // namespace nscd::wire
+namespace nscd {
+namespace wire {
+  struct StoredContact;
+}    // namespace wire
+}    // namespace nscd
 
 namespace LAMMPS_NS {
 

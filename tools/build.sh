@@ -24,7 +24,8 @@ build=${BUILD_DIR:-$here/build}
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 packages=(g++ cmake make xz-utils ca-certificates libopenmpi-dev openmpi-bin
-          libeigen3-dev libqhull-dev libgtest-dev libbenchmark-dev ccache
+          libeigen3-dev libqhull-dev libgtest-dev libgmock-dev libbenchmark-dev ccache
+          pkg-config libyaml-dev                   # LAMMPS' force-style testers (tests/force-styles)
           libfftw3-dev python3-numpy python3-scipy python3-matplotlib
           python3-sphinx python3-myst-parser       # the docs test (doc/conf.py, ctest -L docs)
           paraview python3-paraview xvfb xauth)    # ParaView renders (doc/analysis.md): ~1 min, ~150 packages
