@@ -38,7 +38,7 @@ deck_vars() {   # the -vars an example runs with here
     column) printf '%s\n' "${small_column[@]}" ;;
     silo)   printf '%s\n' -var layers 5 -var R 2.5 -var cells 2 -var layer_steps 500 -var relax_chunk 250 \
                           -var load_rate 20 -var load_max 20 ;;
-    string) printf '%s\n' -var layers 3 -var R 2.5 -var dump_every 1000000 ;;
+    string) printf '%s\n' -var layers 3 -var R 2.5 -var dump_every 1000000 -var load_rate 20 -var load_max 20 ;;
   esac
 }
 
