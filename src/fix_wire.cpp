@@ -430,7 +430,7 @@ void FixWire::make_contact_model()
     error->all(FLERR, "fix wire: contacts need a skin > 0 for their candidate lists; give 'neighbor "
                "SKIN bin' or fix wire's 'skin S'");
   std::vector<wire::StoredContact> memories;
-  if (lib->contacts) memories = lib->contacts->take_memories_unless([](std::int64_t) { return false; });
+  if (lib->contacts) memories = lib->contacts->take_memories();
   lib->contacts = std::make_unique<wire::ContactModel>(lib->law, wire_radius, skin);
   try {
     lib->contacts->set_wire_wire_friction(mu_ww_s, mu_ww_d);

@@ -202,7 +202,7 @@ class FixWire : public Fix {
   int element_partner(int i, tagint tag) const;
   void keep_memories_with_atoms();
   void take_memories_from_atoms();
-  void keep_restored_memories(const std::vector<nscd::wire::StoredContact> &memories);
+  void file_with_owned_nodes(const std::vector<nscd::wire::StoredContact> &memories);
   bool owned_here(tagint tag) const;
   void check_motion_within_skin();
   void hand_forces();

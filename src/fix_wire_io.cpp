@@ -246,17 +246,10 @@ void FixWire::rescale_states(double new_dt)
 void FixWire::keep_memories_with_atoms()
 {
   if (!lib->contacts || memories_with_atoms) return;    // none, or the atoms hold them already
-  const std::vector<wire::StoredContact> memories =
-      lib->contacts->take_memories_unless([](std::int64_t) { return false; });
+  const std::vector<wire::StoredContact> memories = lib->contacts->take_memories();
   const int nall = atom->nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) lib->atom_memories.clear(i);
-  for (const wire::StoredContact &c : memories) {
-    // an atom a fix deleted before this one's pre_exchange takes its contacts' memories along
-    const int i = atom->map((tagint) c.key[0]);
-    if (i >= 0 && i < atom->nlocal) lib->atom_memories.add(i, c);
-  }
-  memories_with_atoms = true;
-  maxexchange = kGearColumns + lib->atom_memories.values_for(lib->atom_memories.longest(0, atom->nlocal));
+  file_with_owned_nodes(memories);
 }
 
 /* After the atoms moved: the owned atoms' memories go back into the contact model, found by
@@ -270,9 +263,11 @@ void FixWire::take_memories_from_atoms()
   memories_with_atoms = false;
 }
 
-/* A restart file of wire format 3 holds every contact's memory in the global block: each
-   rank keeps those of the nodes it owns, as if they had been written per atom. */
-void FixWire::keep_restored_memories(const std::vector<wire::StoredContact> &memories)
+/* Files each memory with the node of its key's first ID where this rank owns that node; the
+   others are another rank's (a restart file of wire format 3 holds every contact's memory in
+   the global block), or of an atom a fix deleted before this one's pre_exchange, which takes
+   its contacts' memories along. */
+void FixWire::file_with_owned_nodes(const std::vector<wire::StoredContact> &memories)
 {
   for (const wire::StoredContact &c : memories) {
     const int i = atom->map((tagint) c.key[0]);
@@ -347,7 +342,7 @@ void FixWire::restart(char *bytes)
                                       ": its contacts' friction springs are not read (they start again from zero)");
     return;
   }
-  if (!block.memories.empty()) keep_restored_memories(block.memories);
+  if (!block.memories.empty()) file_with_owned_nodes(block.memories);
 }
 
 /* ---------------------------------------------------------------------- timing report */

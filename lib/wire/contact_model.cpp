@@ -578,6 +578,16 @@ std::vector<StoredContact> ContactModel::memories() const
   return out;
 }
 
+std::vector<StoredContact> ContactModel::take_memories()
+{
+  carry_memories();
+  std::vector<StoredContact> out;
+  out.reserve(carried_.size());
+  for (const auto &entry : carried_) out.push_back({entry.first, entry.second});
+  carried_.clear();
+  return out;
+}
+
 void ContactModel::add_memories(const std::vector<StoredContact> &stored)
 {
   carry_memories();

@@ -196,9 +196,9 @@ class ContactModel {
   // Memories of all contacts with a non-zero spring (the current ones and those carried
   // to the next rebuild).
   std::vector<StoredContact> memories() const;
-  // Removes and returns the memories whose key's first id is not kept (they move to the
-  // rank that now owns that node).
-  template <class Keep> std::vector<StoredContact> take_memories_unless(const Keep &keep);
+  // Removes and returns every memory (to be kept with the atoms while they move between
+  // ranks, or in a restart file; add_memories gives them back).
+  std::vector<StoredContact> take_memories();
   // Memories to be found by key at the next rebuild (from another rank, a restart file).
   void add_memories(const std::vector<StoredContact> &stored);
   // Forgets the shapes' feature tables (shapes may have moved in memory between runs).
@@ -332,21 +332,5 @@ class ContactModel {
   bool boundary_contact(BoundaryPair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double tau,
                         double dt, std::vector<Vec3> &f, GrainForceAccumulator &reactions, ContactTotals &totals);
 };
-
-template <class Keep>
-std::vector<StoredContact> ContactModel::take_memories_unless(const Keep &keep)
-{
-  carry_memories();
-  std::vector<StoredContact> leaving;
-  for (auto it = carried_.begin(); it != carried_.end();) {
-    if (keep(it->first[0])) {
-      ++it;
-      continue;
-    }
-    leaving.push_back({it->first, it->second});
-    it = carried_.erase(it);
-  }
-  return leaving;
-}
 
 }    // namespace nscd::wire
