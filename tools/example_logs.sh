@@ -30,9 +30,7 @@ stamp=$(date +%d%b%y)
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 export OMPI_MCA_mpi_yield_when_idle=1
 
-small_column=(-var layers 5 -var R 2.5 -var window cylinder -var cells 2 -var element 0.3
-              -var layer_steps 500 -var wire_steps 150 -var relax_chunk 250 -var wall_speed 0.2
-              -var wall_travel 0.8 -var load_rate 20 -var load_max 20)
+source "$here/tools/small_column.sh"    # tools/run_example.sh's small column: small_column
 deck_vars() {   # the -vars an example runs with here
   case "$1" in
     column) printf '%s\n' "${small_column[@]}" ;;

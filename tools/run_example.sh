@@ -39,10 +39,8 @@ if [ "$example" != column ]; then
   exit 0
 fi
 
-# the small column (examples/column/README.md: "Small size" gives its measured numbers)
-small=(-var layers 5 -var R 2.5 -var window cylinder -var cells 2 -var element 0.3 -var layer_steps 500
-       -var wire_steps 150 -var relax_chunk 250 -var wall_speed 0.2 -var wall_travel 0.8 -var load_rate 20
-       -var load_max 20)
+source "$here/tools/small_column.sh"    # the small column's -vars: small_column
+small=("${small_column[@]}")
 [ $# -gt 0 ] && small=("$@")
 out="$here/examples/column/run"
 mkdir -p "$out"
