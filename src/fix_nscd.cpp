@@ -139,61 +139,20 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg) error->all(FLERR, "fix nscd: keyword '{}' needs a value", key);
     const char *value = arg[iarg + 1];
-    if (key == "theta") solver->options.theta = nscd_args::number(lmp, "fix nscd", key, value);
-    else if (key == "tolerance") solver->options.tolerance = nscd_args::number(lmp, "fix nscd", key, value);
-    else if (key == "max_sweeps") solver->options.max_sweeps = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-    else if (key == "relaxation") solver->options.relaxation = nscd_args::number(lmp, "fix nscd", key, value);
-    else if (key == "seed") solver->options.seed = (std::uint64_t) nscd_args::whole(lmp, "fix nscd", key, value);
-    else if (key == "exchange") exchange_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-    else if (key == "check") solver->options.check_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-    else if (key == "warn") warn_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-    else if (key == "overlap_speed") solver->options.overlap_speed = nscd_args::number(lmp, "fix nscd", key, value);
-    else if (key == "interpenetration") interpenetration_warning = nscd_args::number(lmp, "fix nscd", key, value);
-    else if (key == "order") {
-      const std::string order = value;
-      if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
-      else if (order == "shuffled") solver->options.order = nscd::SweepOrder::shuffled;
-      else if (order == "forward_backward") solver->options.order = nscd::SweepOrder::forward_backward;
-      else
-        error->all(FLERR, "fix nscd: unknown order '{}' (expected as_given, shuffled or "
-                   "forward_backward)", order);
-    } else if (key == "method") {
-      const std::string method = value;
-      if (method == "gs") solver->options.acceleration = nscd::Acceleration::none;
-      else if (method == "nesterov") solver->options.acceleration = nscd::Acceleration::nesterov;
-      else if (method == "nncg") solver->options.acceleration = nscd::Acceleration::nncg;
-      else
-        error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov or nncg)", method);
-    } else if (key == "coarse") {
-      solver->options.coarse_cell = coarse_cell_of(value, lmp);
-    } else if (key == "write_problem") {
+    if (key == "write_problem") {
       if (iarg + 2 >= narg)
         error->all(FLERR, "fix nscd: write_problem needs a step and a file name (write_problem STEP FILE)");
       problem_step = nscd_args::whole(lmp, "fix nscd", key, value, 0, MAXBIGINT);
       problem_file = arg[iarg + 2];
       ++iarg;
-    } else if (key == "skip_separating") {
-      const std::string skip = value;
-      if (skip != "yes" && skip != "no")
-        error->all(FLERR, "fix nscd: skip_separating '{}' must be yes or no", skip);
-      solver->options.skip_separating = skip == "yes";
-    } else {
+    } else if (!set_option(key, value)) {
       error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
                  "relaxation, check, order, seed, exchange, warn, method, coarse, overlap_speed, "
                  "interpenetration, skip_separating, write_problem)", key);
     }
   }
-  if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
-  if (warn_every < 1) error->all(FLERR, "fix nscd: warn {} must be >= 1", warn_every);
-  if (!(interpenetration_warning >= 0.0) || !std::isfinite(interpenetration_warning))
-    error->all(FLERR, "fix nscd: interpenetration {} must be a finite fraction >= 0 of the rounding radius "
-               "(0: no warning)", interpenetration_warning);
   solver->options.dt = 1.0;    // validated for real in init(), with the run's timestep
-  try {
-    solver->options.validate();
-  } catch (std::exception &e) {
-    error->all(FLERR, "fix nscd: {}", e.what());
-  }
+  check_options();
   // The warm-start impulses as per-atom data: they move with their atoms and are written
   // per atom to restart files (as fix neigh/history keeps pair granular's shear history).
   restart_peratom = 1;
@@ -202,6 +161,74 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   FixNSCD::grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
+}
+
+/* One solver keyword of the fix line or of fix_modify: false if KEY is none of them. */
+bool FixNSCD::set_option(const std::string &key, const char *value)
+{
+  if (key == "theta") solver->options.theta = nscd_args::number(lmp, "fix nscd", key, value);
+  else if (key == "tolerance") solver->options.tolerance = nscd_args::number(lmp, "fix nscd", key, value);
+  else if (key == "max_sweeps") solver->options.max_sweeps = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "relaxation") solver->options.relaxation = nscd_args::number(lmp, "fix nscd", key, value);
+  else if (key == "seed") solver->options.seed = (std::uint64_t) nscd_args::whole(lmp, "fix nscd", key, value);
+  else if (key == "exchange") exchange_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "check") solver->options.check_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "warn") warn_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "overlap_speed") solver->options.overlap_speed = nscd_args::number(lmp, "fix nscd", key, value);
+  else if (key == "interpenetration") interpenetration_warning = nscd_args::number(lmp, "fix nscd", key, value);
+  else if (key == "order") {
+    const std::string order = value;
+    if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
+    else if (order == "shuffled") solver->options.order = nscd::SweepOrder::shuffled;
+    else if (order == "forward_backward") solver->options.order = nscd::SweepOrder::forward_backward;
+    else
+      error->all(FLERR, "fix nscd: unknown order '{}' (expected as_given, shuffled or "
+                 "forward_backward)", order);
+  } else if (key == "method") {
+    const std::string method = value;
+    if (method == "gs") solver->options.acceleration = nscd::Acceleration::none;
+    else if (method == "nesterov") solver->options.acceleration = nscd::Acceleration::nesterov;
+    else if (method == "nncg") solver->options.acceleration = nscd::Acceleration::nncg;
+    else
+      error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov or nncg)", method);
+  } else if (key == "coarse") {
+    solver->options.coarse_cell = coarse_cell_of(value, lmp);
+  } else if (key == "skip_separating") {
+    const std::string skip = value;
+    if (skip != "yes" && skip != "no")
+      error->all(FLERR, "fix nscd: skip_separating '{}' must be yes or no", skip);
+    solver->options.skip_separating = skip == "yes";
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void FixNSCD::check_options()
+{
+  if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
+  if (warn_every < 1) error->all(FLERR, "fix nscd: warn {} must be >= 1", warn_every);
+  if (!(interpenetration_warning >= 0.0) || !std::isfinite(interpenetration_warning))
+    error->all(FLERR, "fix nscd: interpenetration {} must be a finite fraction >= 0 of the rounding radius "
+               "(0: no warning)", interpenetration_warning);
+  try {
+    solver->options.validate();
+  } catch (std::exception &e) {
+    error->all(FLERR, "fix nscd: {}", e.what());
+  }
+}
+
+/* fix_modify ID KEY VALUE: any keyword of the fix line but write_problem, for the next runs
+   (e.g. a looser tolerance for a deposit, then the default for the relaxations). */
+int FixNSCD::modify_param(int narg, char **arg)
+{
+  const std::string key = arg[0];
+  if (key == "write_problem")
+    error->all(FLERR, "fix_modify {}: write_problem is set on the fix nscd line only", id);
+  if (narg < 2) error->all(FLERR, "fix_modify {}: keyword '{}' needs a value", id, key);
+  if (!set_option(key, arg[1])) return 0;
+  check_options();
+  return 2;
 }
 
 FixNSCD::~FixNSCD()

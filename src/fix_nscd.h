@@ -51,6 +51,7 @@ class FixNSCD : public Fix {
   void final_integrate() override;
   void post_run() override;
   void pre_exchange() override;
+  int modify_param(int, char **) override;
   double compute_vector(int) override;
   double memory_usage() override;
 
@@ -90,6 +91,8 @@ class FixNSCD : public Fix {
   // compile lib/ and Eigen (fix_nscd.cpp).
   struct Solver;
   std::unique_ptr<Solver> solver;
+  bool set_option(const std::string &key, const char *value);
+  void check_options();
 
   int exchange_every = 1;       // sweeps between ghost velocity exchanges
   int warn_every = 1000;        // steps between repeated "unconverged" warnings

@@ -1057,6 +1057,37 @@ static std::map<std::pair<tagint, tagint>, std::vector<double>> pair_forces(FixN
   return total;
 }
 
+// fix_modify sets any solver keyword of the fix line for the next runs (the column deck
+// deposits at one tolerance and relaxes at another): a pour solved to 1e-3 stops its steps
+// there (some above 1e-6), then to 1e-7 every step converges to 1e-7. Without modify_param
+// fix_modify refuses the keyword; if it were ignored, the steps would stay at 1e-3.
+TEST_F(NSCDTest, FixModifySetsTheSolverOptionsOfTheNextRuns)
+{
+  commands(small_pile_grains());
+  run("timestep 0.005");
+  commands(small_pile_box());
+  run("fix solver all nscd tolerance 1e-7 max_sweeps 5000");
+  run("fix_modify solver tolerance 1e-3");
+  double loosest = 0.0;
+  for (int k = 0; k < 400; k++) {
+    run("run 1");
+    const double residual = fix_value("solver", 1);
+    EXPECT_LE(residual, 1e-3) << "step " << k + 1;
+    loosest = std::max(loosest, residual);
+  }
+  EXPECT_GT(loosest, 1e-6);    // stopped at the loose tolerance, not at the fix line's
+  run("fix_modify solver tolerance 1e-7 check 2");
+  for (int k = 0; k < 50; k++) {
+    run("run 1");
+    EXPECT_LE(fix_value("solver", 1), 1e-7) << "step " << k + 401;
+    EXPECT_EQ(fix_value("solver", 7), 1.0) << "step " << k + 401;
+  }
+  EXPECT_NE(error_of("fix_modify solver tolerance -1").find("tolerance"), std::string::npos);
+  EXPECT_NE(error_of("fix_modify solver method cg").find("'cg'"), std::string::npos);
+  EXPECT_NE(error_of("fix_modify solver write_problem 5 f").find("fix nscd line"), std::string::npos);
+  EXPECT_NE(error_of("fix_modify solver tolerance"), "");
+}
+
 TEST_F(NSCDTest, BadMethodAndCoarseAreNamed)
 {
   commands({"units lj", "atom_style spheropolyhedron", "boundary f f f", "region box block -5 5 -5 5 -5 5",
