@@ -416,7 +416,9 @@ void FixNSCD::setup(int vflag)
   find_partners();
   check_no_bonds_on_grains();
   warn_if_grains_overlap();
-  records_sent = values_sent = 0.0;
+  records_sent = values_sent = records_migrated = values_migrated = records_received = 0.0;
+  comm_counts.clear();
+  exchanges_run = reductions_run = 0;
   solver->times.clear();
   solver->run = Solver::RunStats();
   find_smallest_rounding();
@@ -539,6 +541,7 @@ void FixNSCD::post_run()
   solver->times[Solver::DETECTION] = timer->get_wall(Timer::PAIR);
   const std::string table = solver->times.table(world, fmt::format("fix nscd {}: time per part", id),
                                                 timer->get_wall(Timer::TOTAL));
+  const std::string between_ranks = communication_report();
   if (comm->me != 0) return;
   utils::logmesg(lmp, "fix nscd {}: {} steps, sweeps per step {:.4g} on average, at most {:.0f} (step {}); "
                  "{} unconverged ({:.3g} %, tolerance {:.3g}); deepest interpenetration {:.4g} (step {})\n{}",
@@ -549,6 +552,37 @@ void FixNSCD::post_run()
     utils::logmesg(lmp, "fix nscd {}: warm start kept with the atoms: {:.0f} records packed for other ranks "
                    "over the run (ghosts' records to their owners, records of migrating atoms), {:.4g} MB with "
                    "their counts\n", id, sent, sent_values * sizeof(double) / 1048576.0);
+  utils::logmesg(lmp, between_ranks);
+}
+
+/* Collective. After a run on several ranks: what fix nscd's exchanges carried between ranks
+   (comm_count(), summed over the ranks; per rank, the average), per sweep exchange, per step
+   and over the run (doc/scaling.md, "Counted"); the text on rank 0, empty on one rank. */
+std::string FixNSCD::communication_report()
+{
+  if (comm->nprocs == 1) return "";
+  const std::vector<NSCDCommCount::Tally> all = comm_counts.summed(world);
+  double mine[3] = {records_received, records_migrated, values_migrated}, sums[3];
+  MPI_Allreduce(mine, sums, 3, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return "";
+  const double ranks = comm->nprocs, steps = (double) solver->run.steps;
+  const double exchanges = std::max(1.0, (double) exchanges_run);
+  const NSCDCommCount::Tally &sweep = all[COMM_SWEEP], &state = all[COMM_GHOST_STATE], &step = all[COMM_STEP],
+                             &records = all[COMM_RECORDS];
+  return fmt::format(
+      "fix nscd {0}: between ranks (messages received from another rank; per rank: the average over {1:.0f}):\n"
+      "fix nscd {0}: per sweep exchange: {4:.4g} messages, {5:.4g} bytes per rank ({2:.0f} exchanges, {3:.4g} per "
+      "step)\n"
+      "fix nscd {0}: per step: ghosts' state {7:.4g} messages, {8:.4g} bytes per rank ({6:.4g} ghosts from another "
+      "rank); motion, shares and virial {9:.4g} messages, {10:.4g} bytes per rank; {11:.4g} solver reductions "
+      "(MPI_Allreduce)\n"
+      "fix nscd {0}: warm start over the run: {12:.0f} ghosts' records to their owners in {13:.0f} messages, "
+      "{14:.4g} MB; {15:.0f} records with migrating atoms, {16:.4g} MB\n",
+      id, ranks, (double) exchanges_run, exchanges_run / std::max(1.0, steps), sweep.messages / exchanges / ranks,
+      sweep.bytes / exchanges / ranks, state.atoms / steps / ranks, state.messages / steps / ranks,
+      state.bytes / steps / ranks, step.messages / steps / ranks, step.bytes / steps / ranks,
+      reductions_run / std::max(1.0, steps), sums[0], records.messages, records.bytes / 1048576.0, sums[1],
+      sums[2] * sizeof(double) / 1048576.0);
 }
 
 void FixNSCD::build_bodies()
@@ -812,11 +846,16 @@ void FixNSCD::solve()
     comm_time += platform::walltime() - t0;
   };
   nscd::SolverCommunication communication;
-  communication.exchange = [&](nscd::ContactProblem &) { timed([&] { exchange_velocities(); }); };
+  communication.exchange = [&](nscd::ContactProblem &) {
+    exchanges_run++;
+    timed([&] { exchange_velocities(); });
+  };
   communication.sum = [&](double *values, int n) {
+    reductions_run++;
     timed([&] { MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, world); });
   };
   communication.max = [&](double *values, int n) {
+    reductions_run++;
     timed([&] { MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_MAX, world); });
   };
   communication.exchange_every = exchange_every;
@@ -1041,6 +1080,7 @@ double FixNSCD::memory_usage()
    solver velocities to their ghosts. */
 int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
+  comm_counts.packed(buf);
   int m = 0;
   if (exchange_mode == Exchange::share) {
     for (int k = 0; k < n; k++) buf[m++] = solver->problem.bodies[list[k]].share;
@@ -1066,12 +1106,10 @@ int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
 void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
 {
   int m = 0;
-  if (exchange_mode == Exchange::share) {
-    for (int i = first; i < first + n; i++) solver->problem.bodies[i].share = buf[m++];
-    return;
-  }
   for (int i = first; i < first + n; i++) {
-    if (exchange_mode == Exchange::state) {
+    if (exchange_mode == Exchange::share) {
+      solver->problem.bodies[i].share = buf[m++];
+    } else if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
         for (int d = 0; d < 3; d++) a[d] = buf[m++];
     } else if (exchange_mode == Exchange::motion) {
@@ -1083,10 +1121,24 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
       for (int d = 0; d < 3; d++) body.angular_velocity[d] = buf[m++];
     }
   }
+  comm_counts.unpacked(comm_kind(), n, m, buf);
+}
+
+/* The kind of exchange the current mode counts as (comm_count()). */
+FixNSCD::CommKind FixNSCD::comm_kind() const
+{
+  switch (exchange_mode) {
+    case Exchange::correction:
+    case Exchange::velocity: return COMM_SWEEP;
+    case Exchange::state: return COMM_GHOST_STATE;
+    case Exchange::records: return COMM_RECORDS;
+    default: return COMM_STEP;
+  }
 }
 
 int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
 {
+  comm_counts.packed(buf);
   int m = 0;
   if (exchange_mode == Exchange::records) {    // the ghosts' last records go to their owners, and leave them
     if (n == 0) return 0;    // (a rank that receives for no atom expects nothing)
@@ -1130,26 +1182,28 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
   if (exchange_mode == Exchange::records) {
     if (n == 0) return;
     const int sending = (int) buf[m++];
+    double records = 0.0;
     for (int e = 0; e < sending; e++) {
       const int k = (int) buf[m++];
-      m += solver->atom_impulses.unpack_append(list[k], buf + m);
+      const int read = solver->atom_impulses.unpack_append(list[k], buf + m);
+      records += (double) (read - 1) / NSCDAtomImpulses::kValuesPerRecord;
+      m += read;
     }
-    return;
-  }
-  if (exchange_mode == Exchange::virial) {
-    for (int k = 0; k < n; k++)
-      for (int c = 0; c < 6; c++) vatom[list[k]][c] += buf[m++];
-    return;
-  }
-  if (exchange_mode == Exchange::share) {
-    for (int k = 0; k < n; k++) solver->problem.bodies[list[k]].share += buf[m++];
+    if (comm_counts.unpacked(COMM_RECORDS, n, m, buf)) records_received += records;
     return;
   }
   for (int k = 0; k < n; k++) {
-    nscd::SolverBody &body = solver->problem.bodies[list[k]];
-    for (int d = 0; d < 3; d++) body.velocity[d] += buf[m++];
-    for (int d = 0; d < 3; d++) body.angular_velocity[d] += buf[m++];
+    if (exchange_mode == Exchange::virial) {
+      for (int c = 0; c < 6; c++) vatom[list[k]][c] += buf[m++];
+    } else if (exchange_mode == Exchange::share) {
+      solver->problem.bodies[list[k]].share += buf[m++];
+    } else {
+      nscd::SolverBody &body = solver->problem.bodies[list[k]];
+      for (int d = 0; d < 3; d++) body.velocity[d] += buf[m++];
+      for (int d = 0; d < 3; d++) body.angular_velocity[d] += buf[m++];
+    }
   }
+  comm_counts.unpacked(comm_kind(), n, m, buf);
 }
 
 /* Restart: the timestep of the last solved impulses; the impulses themselves are written
@@ -1199,9 +1253,10 @@ void FixNSCD::set_arrays(int i)
 
 int FixNSCD::pack_exchange(int i, double *buf)
 {
-  records_sent += (double) solver->atom_impulses.of(i).size();
+  const double records = (double) solver->atom_impulses.of(i).size();
   const int m = solver->atom_impulses.pack(i, buf);
-  values_sent += m;
+  records_sent += records, records_migrated += records;
+  values_sent += m, values_migrated += m;
   return m;
 }
 

@@ -27,6 +27,7 @@ FixStyle(nscd,FixNSCD);
 #define LMP_FIX_NSCD_H
 
 #include "fix.h"
+#include "nscd_comm_count.h"
 
 #include <memory>
 #include <string>
@@ -79,6 +80,15 @@ class FixNSCD : public Fix {
   size_t warm_start_records_held() const;
   size_t warm_start_records_of_other_ranks() const;
 
+  // This run's communication between ranks as this rank received it (nscd_comm_count.h,
+  // doc/scaling.md "Counted"): the exchanges after the sweeps, the ghosts' state at the
+  // step's start, the rest of the step (motion, shares, virial), the warm-start records
+  // handed to ghosts' owners; and the sweep exchanges and solver reductions done.
+  enum CommKind { COMM_SWEEP, COMM_GHOST_STATE, COMM_STEP, COMM_RECORDS, N_COMM_KINDS };
+  const NSCDCommCount &comm_count() const { return comm_counts; }
+  bigint sweep_exchanges() const { return exchanges_run; }
+  bigint solver_reductions() const { return reductions_run; }
+
   // The contacts of the last solve (grain-grain first, then boundaries), with impulses.
   const std::vector<nscd::Contact> &contacts() const;
   double timestep() const { return dt; }
@@ -119,6 +129,10 @@ class FixNSCD : public Fix {
   bool solved_since_filing = false;
   double records_sent = 0.0;    // records packed for ghosts' owners and migrating atoms, this run,
   double values_sent = 0.0;     //   and the doubles sent with them (counts, places)
+  double records_migrated = 0.0, values_migrated = 0.0;    // of these, with migrating atoms
+  double records_received = 0.0;    // ghosts' records received from other ranks' ghosts
+  NSCDCommCount comm_counts{N_COMM_KINDS};
+  bigint exchanges_run = 0, reductions_run = 0;
 
   enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode = Exchange::state;
 
@@ -154,6 +168,8 @@ class FixNSCD : public Fix {
   void write_problem();
   void solve();
   void count_run_statistics();
+  CommKind comm_kind() const;
+  std::string communication_report();
   void exchange_velocities();
   void move_grains();
   void hand_back_forces();

@@ -467,6 +467,8 @@ void FixWire::setup(int /*vflag*/)
   timing.fill(0.0);
   lib->timing = wire::StepTiming();
   substeps_run = 0;
+  comm_counts.clear();
+  migrated.fill(0.0);
   rebuilds_at_start = lib->contacts ? lib->contacts->rebuilds() : 0;
 }
 

@@ -31,6 +31,7 @@ FixStyle(wire,FixWire);
 #define LMP_FIX_WIRE_H
 
 #include "fix.h"
+#include "nscd_comm_count.h"
 
 #include <array>
 #include <cstdio>
@@ -98,6 +99,15 @@ class FixWire : public Fix {
   size_t wire_memories_held() const;
   size_t wire_memories_of_other_ranks() const;
 
+  // This run's communication between ranks as this rank received it (nscd_comm_count.h,
+  // doc/scaling.md "Counted"): the subcycle's node exchanges and the once-a-step ones; the
+  // substeps run; the friction memories (and their doubles) packed with migrating atoms.
+  enum CommKind { COMM_SUBSTEP, COMM_STEP, N_COMM_KINDS };
+  const NSCDCommCount &comm_count() const { return comm_counts; }
+  bigint substeps() const { return substeps_run; }
+  double memories_migrated() const { return migrated[0]; }
+  double memory_values_migrated() const { return migrated[1]; }
+
   // "radius" (create_wire's default), "k_n" (0: no contacts): pointers to doubles, dim 0.
   void *extract(const char *, int &) override;
   void pre_exchange() override;
@@ -150,6 +160,8 @@ class FixWire : public Fix {
 
   enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force } comm_mode = Comm::node_state;
   bool counting_comm = false;                // the subcycle's communication: counted
+  NSCDCommCount comm_counts{N_COMM_KINDS};
+  std::array<double, 2> migrated{};          // memories packed with migrating atoms, their doubles
   std::vector<double> grain_force_buffer;    // 6 per local atom
 
   std::array<double, 16> diagnostics{};
@@ -207,6 +219,7 @@ class FixWire : public Fix {
   void check_motion_within_skin();
   void hand_forces();
   void communicate(Comm mode, bool reverse, bool counted = false);
+  std::string communication_report() const;
   int comm_fields(int i, double *field[2]);
 };
 

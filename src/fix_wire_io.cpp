@@ -82,6 +82,7 @@ int FixWire::pack_forward_comm(int n, int *list, double *buf, int pbc_flag, int 
     shift[1] = pbc[1] * domain->yprd + (domain->triclinic ? pbc[3] * domain->yz : 0.0);
     shift[2] = pbc[2] * domain->zprd;
   }
+  comm_counts.packed(buf);
   int m = 0;
   double *field[2];
   for (int k = 0; k < n; k++)
@@ -98,10 +99,12 @@ void FixWire::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++)
     for (int f = 0, fields = comm_fields(i, field); f < fields; f++)
       for (int d = 0; d < 3; d++) field[f][d] = buf[m++];
+  comm_counts.unpacked(counting_comm ? COMM_SUBSTEP : COMM_STEP, n, m, buf);
 }
 
 int FixWire::pack_reverse_comm(int n, int first, double *buf)
 {
+  comm_counts.packed(buf);
   int m = 0;
   double *field[2];
   for (int i = first; i < first + n; i++)
@@ -118,6 +121,7 @@ void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
   for (int k = 0; k < n; k++)
     for (int f = 0, fields = comm_fields(list[k], field); f < fields; f++)
       for (int d = 0; d < 3; d++) field[f][d] += buf[m++];
+  comm_counts.unpacked(counting_comm ? COMM_SUBSTEP : COMM_STEP, n, m, buf);
 }
 
 /* ---------------------------------------------------------------------- per-atom state */
@@ -147,7 +151,10 @@ void FixWire::set_arrays(int i)
 int FixWire::pack_exchange(int i, double *buf)
 {
   std::copy(gear[i], gear[i] + kGearColumns, buf);
-  return kGearColumns + lib->atom_memories.pack(i, buf + kGearColumns);
+  const int values = lib->atom_memories.pack(i, buf + kGearColumns);
+  migrated[0] += (double) lib->atom_memories.of(i).size();
+  migrated[1] += values;
+  return kGearColumns + values;
 }
 
 int FixWire::unpack_exchange(int nlocal, double *buf)
@@ -370,6 +377,7 @@ void FixWire::post_run()
   std::string text = parts.table(world, fmt::format("fix wire {}: time per part", id), loop);
   std::array<double, N_TIMING> sum;
   MPI_Allreduce(timing.data(), sum.data(), N_TIMING, MPI_DOUBLE, MPI_SUM, world);
+  const std::string between_ranks = communication_report();
   if (comm->me != 0) return;
   const double steps = (double) substeps_run;
   const double per = sum[T_NODE_SUBSTEPS] > 0.0 ? 1e9 / sum[T_NODE_SUBSTEPS] : 0.0;
@@ -387,7 +395,30 @@ void FixWire::post_run()
                         c.candidates(), 100.0 * c.grain_evaluations_from_hint() / std::max(1LL, c.grain_evaluations()),
                         c.grain_evaluations());
   }
-  utils::logmesg(lmp, text);
+  utils::logmesg(lmp, text + between_ranks);
+}
+
+/* Collective. After a run on several ranks: what fix wire's exchanges carried between ranks
+   (comm_count(), summed over the ranks; per rank, the average), per substep, per step and,
+   for the friction memories of migrating nodes, over the run (doc/scaling.md, "Counted");
+   the text on rank 0, empty on one rank. */
+std::string FixWire::communication_report() const
+{
+  if (comm->nprocs == 1) return "";
+  const std::vector<NSCDCommCount::Tally> all = comm_counts.summed(world);
+  std::array<double, 2> moved{};
+  MPI_Allreduce(migrated.data(), moved.data(), 2, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return "";
+  const double ranks = comm->nprocs, substeps = std::max<double>(1.0, (double) substeps_run);
+  const double steps = std::max(1.0, (double) update->nsteps);
+  const NSCDCommCount::Tally &sub = all[COMM_SUBSTEP], &step = all[COMM_STEP];
+  return fmt::format(
+      "fix wire {0}: between ranks (messages received from another rank; per rank: the average over {1:.0f}):\n"
+      "fix wire {0}: per substep: {2:.4g} messages, {3:.4g} bytes per rank (72 bytes per ghost node from another "
+      "rank: {4:.4g} of them per rank); per step outside the substeps: {5:.4g} messages, {6:.4g} bytes per rank\n"
+      "fix wire {0}: friction memories with migrating nodes over the run: {7:.0f}, {8:.4g} MB\n",
+      id, ranks, sub.messages / substeps / ranks, sub.bytes / substeps / ranks, sub.bytes / 72.0 / substeps / ranks,
+      step.messages / steps / ranks, step.bytes / steps / ranks, moved[0], moved[1] * sizeof(double) / 1048576.0);
 }
 
 /* ---------------------------------------------------------------------- output */

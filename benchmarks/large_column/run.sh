@@ -17,7 +17,8 @@
 # ranks (default 2), stopped once STOP layers (default 2) have been deposited or after
 # MAX_SECONDS of wall time (default 780), whichever comes first. Prints the layers done, the
 # steps, the time per step, the mean sweeps per step, LAMMPS' "Per MPI rank memory" line of
-# the last run and each rank's peak resident memory (/usr/bin/time %M).
+# the last run, each rank's peak resident memory (VmHWM) and, on several ranks, fix nscd's and
+# fix wire's counts of messages and bytes between ranks over the last run that ended.
 #
 #   benchmarks/large_column/run.sh                     # 2 ranks, the first 2 layers
 #   STOP=4 MAX_SECONDS=3600 benchmarks/large_column/run.sh
@@ -83,3 +84,7 @@ memory = re.findall(r"^Per MPI rank memory.*$", text, re.M)
 if memory: print("last run: " + memory[-1])
 PY
 echo "peak resident memory per lmp process (kB, up to the last reading before the stop): ${peak[*]}"
+# fix nscd's and fix wire's counts of their communication between ranks over the last run
+# that ended (on more than one rank: messages and bytes per sweep exchange, per substep, ...)
+grep "^fix nscd [^ ]*: \(between\|per \|warm start over\)" log.large | tail -4 || true
+grep "^fix wire [^ ]*: \(between\|per substep\|friction memories with\)" log.large | tail -3 || true

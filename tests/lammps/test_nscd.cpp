@@ -1301,3 +1301,64 @@ TEST_F(NSCDTest, RestingPyramidStaysPutThroughShiftAndRcbBalance)
   EXPECT_LE(after, resting + 2);
   EXPECT_EQ(lmp->atom->natoms, 10);
 }
+
+// ---- communication between ranks, counted (doc/scaling.md, "Counted") ----
+
+// fix nscd counts what its exchanges carry between ranks as the receiving rank gets it. Two
+// cubes rest on the floor on either side of x = 0 (processors * 1 1: the cut on 2 ranks, cuts
+// at x = -10, 0, 10 on 4; the ghost cutoff is ~6, from the library's 4 x 4 plate). First in
+// a box periodic in y and 8 wide, so that every rank also holds periodic images of the cubes
+// it has, copies within the rank and not messages: each cube is a ghost of the other's rank
+// and nothing else comes from another rank, so by hand each exchange after a sweep is a
+// message each way in the reverse communication (6 doubles per ghost) and again in the
+// forward one, 4 messages and 2 x 2 x 6 x 8 = 192 bytes; each step's start sends the ghosts'
+// state (12 doubles per ghost) in 2 messages; the rest of the step, their new motion (6) and
+// the mass-splitting shares (1 back, 1 forth), in 6 messages. On 1 rank only images: nothing
+// is counted. Then in a closed box under comm_style tiled and balance rcb, where every ghost
+// comes from another rank: the same per ghost, and on 2 ranks one message per receiving rank
+// and communication. Failed with the copies within the rank counted (as fix wire's bytes per
+// substep count them): 8 ghosts' worth on 1 rank.
+TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
+{
+  const double steps = 20;
+  for (const std::string &layout : {"brick", "tiled"}) {
+    if (layout == "tiled") restart_instance();
+    commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array",
+              layout == "brick" ? "boundary f p f" : "boundary f f f", "processors * 1 1",
+              "shapes read " + scratch("shapes"), "region box block -20 20 -4 4 -1 9", "create_box 1 box",
+              "pair_style nscd", "pair_coeff * * 0.5", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+              "timestep 0.001", "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5",
+              "fix g all gravity 1.0 vector 0 0 -1", "fix solver all nscd tolerance 1e-10 max_sweeps 2000 check 1",
+              "thermo_style custom step", "thermo 1000"});
+    add_cube(-0.6, 0.0, 0.5);
+    add_cube(0.6, 0.0, 0.5);
+    run("shapes assign all shape 1 density 1");
+    if (layout == "tiled") commands({"comm_style tiled", "balance 1.0 rcb"});
+    run("run " + num(steps));
+    const std::vector<NSCDCommCount::Tally> all = solver()->comm_count().summed(MPI_COMM_WORLD);
+    double mine[2] = {(double) lmp->atom->nghost, lmp->atom->nghost > 0 ? 1.0 : 0.0}, ghosts[2];
+    MPI_Allreduce(mine, ghosts, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+    const double exchanges = (double) solver()->sweep_exchanges();
+    // ghosts from another rank, and the ranks receiving them (one message each, brick and 2-rank tiled)
+    const double remote = layout == "tiled" ? ghosts[0] : ranks() > 1 ? 2.0 : 0.0;
+    const double receiving = layout == "tiled" ? ghosts[1] : remote;
+    if (rank() == 0)
+      std::printf("[ INFO     ] %s, %d ranks: %g ghosts, %g sweep exchanges over %g steps; sweeps %g messages %g "
+                  "bytes, ghost state %g %g, rest of the step %g %g\n",
+                  layout.c_str(), ranks(), ghosts[0], exchanges, steps, all[FixNSCD::COMM_SWEEP].messages,
+                  all[FixNSCD::COMM_SWEEP].bytes, all[FixNSCD::COMM_GHOST_STATE].messages,
+                  all[FixNSCD::COMM_GHOST_STATE].bytes, all[FixNSCD::COMM_STEP].messages,
+                  all[FixNSCD::COMM_STEP].bytes);
+    if (layout == "brick") EXPECT_GE(ghosts[0], remote + 4.0);    // the images of both cubes on each side
+    if (layout == "tiled" && ranks() > 1) EXPECT_GE(ghosts[0], 2.0);
+    EXPECT_GE(exchanges, steps) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_SWEEP].bytes, 96.0 * remote * exchanges) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].atoms, remote * steps) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].bytes, 96.0 * remote * steps) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_STEP].bytes, 64.0 * remote * steps) << layout;
+    if (layout == "tiled" && ranks() > 2) continue;    // rcb's 4 sub-domains: ghosts from several ranks
+    EXPECT_EQ(all[FixNSCD::COMM_SWEEP].messages, 2.0 * receiving * exchanges) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].messages, receiving * steps) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_STEP].messages, 3.0 * receiving * steps) << layout;
+  }
+}

@@ -559,6 +559,12 @@ TEST_F(WireOnGrainTest, FrictionHistorySurvivesItsNodeChangingRankMidRun)
   EXPECT_GE(before[0], 4.0);    // one contact per element at least
   EXPECT_EQ(after[0], before[0]);
   EXPECT_EQ(after[2], 0.0);
+  // every node crossed the cut at x = 0 once, carrying its memories with it (fix wire's count
+  // of the memories packed with migrating atoms, doc/scaling.md "Counted")
+  const auto *fix = dynamic_cast<FixWire *>(lmp->modify->get_fix_by_id("w"));
+  const double migrated = summed(fix->memories_migrated()), values = summed(fix->memory_values_migrated());
+  if (rank() == 0) std::printf("[ INFO     ] memories migrated %g (%g doubles)\n", migrated, values);
+  EXPECT_EQ(migrated, ranks() > 1 ? after[0] : 0.0);
 }
 
 // A restart written on all ranks of this run (4, or 2) is read on fewer ranks (2 and 1, on
@@ -1603,7 +1609,10 @@ TEST_F(WireOnBoundaryTest, PlateRestsOnTheWireAtTheClosedFormHeight)
   wire_on_floor();
   commands({"fix plate wire nscd/plate " + num(2 * kRadius) + " mass " + num(W) + " gravity 1"});
   wire_and_solver();
-  run("run 12000");    // the plate's bounce on the wire's springs decays by e every ~440 steps
+  // The plate's bounce on the wire's springs decays by e every ~440 steps: at step 9000 (1 rank)
+  // the reaction is within 7e-10 of W, the floor's within 7e-10 of W plus the wire, the plate
+  // 1.4e-6 of the tolerance from its height and moving at 5e-12 (8000: 8e-9; 12000 before).
+  run("run 9000");
   const double from_plate = W / kNodes, weight = kNodes * kMass;
   const double z = 2 * kRadius - (from_plate + kMass) / kN - from_plate / kN;
   std::printf("[ plate on wire ] plate z %.12g (closed form %.12g), reaction %.10g (W %g), floor %.10g\n",
@@ -1699,9 +1708,41 @@ TEST_F(WireOnBoundaryTest, InertiaScalesTheDynamicsNotTheWeight)
   EXPECT_NEAR((kRadius + 0.01 - position(5)[2]) / (t * t / (2.0 * S)), 1.0, 0.01);    // (the Gear start lags ~dt)
   EXPECT_EQ(fix_value("w", 5), std::ceil(plain_substeps / 4.0 - 1e-9));
   EXPECT_NEAR(fix_value("w", 10) / plain_stable, 4.0, 1e-9);    // every rate of the wire / sqrt(S)
-  run("run 20000");    // down onto the floor (dashpots scaled: it does not bounce away), at rest there
+  // down onto the floor (dashpots scaled: it does not bounce away), at rest there: on 1 rank the
+  // floor carries the weight to 8.5e-11 at step 8000 and to round-off (2e-16) from 10000 on
+  // (20000 before)
+  run("run 10000");
   const double weight = kNodes * kMass;
   EXPECT_NEAR(fix_value("floor", 2) / -weight, 1.0, 1e-6);
   EXPECT_NEAR(position(5)[2], kRadius - kMass / kN, 1e-3 * kMass / kN);
   EXPECT_NE(error_of("fix w2 wire wire inertia 0.5").find("inertia 0.5 must be >= 1"), std::string::npos);
+}
+
+// ---- communication between ranks, counted (doc/scaling.md, "Counted") ----
+
+// fix wire counts what its exchanges carry between ranks as the receiving rank gets it. A
+// straight wire at rest along x across the cut at x = 0, in the upper half of the box (y =
+// 0.25), in a closed box: every ghost node comes from another rank, and in each substep it
+// gets its position and velocity (6 doubles) and hands back its force (3): 72 bytes per ghost
+// node, all ranks' ghost nodes counted by hand from their atoms. The messages: on 2 ranks
+// (2 x 1) each rank receives its ghosts in one message and sends their forces back in one,
+// 4 in all; on 4 ranks (2 x 2) the two upper ranks exchange in x as on 2 and each hands its
+// own and ghost nodes down in y to the empty rank below it: 8. On 1 rank no ghost, nothing.
+TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
+{
+  std::vector<Point> nodes = straight_chain(21, 0.2, 0.01, -2.0);
+  for (Point &p : nodes) p.y = 0.25;
+  scene(nodes, 21, true, 100.0, 0.2, 0.05);
+  commands({"fix w all wire k_n 0", "thermo_style custom step", "thermo 1000", "run 10"});
+  const auto *fix = dynamic_cast<FixWire *>(lmp->modify->get_fix_by_id("w"));
+  const std::vector<NSCDCommCount::Tally> all = fix->comm_count().summed(MPI_COMM_WORLD);
+  const double ghosts = summed(lmp->atom->nghost), substeps = (double) fix->substeps();
+  const double messages = ranks() == 1 ? 0.0 : ranks() == 2 ? 4.0 : 8.0;
+  if (rank() == 0)
+    std::printf("[ INFO     ] %d ranks: %g ghost nodes, %g substeps: %g messages, %g bytes in the substeps\n",
+                ranks(), ghosts, substeps, all[FixWire::COMM_SUBSTEP].messages, all[FixWire::COMM_SUBSTEP].bytes);
+  EXPECT_GT(substeps, 10.0);
+  if (ranks() > 1) EXPECT_GE(ghosts, 10.0);    // 3.0 of ghost cutoff: the nodes within 3.0 of a cut
+  EXPECT_EQ(all[FixWire::COMM_SUBSTEP].bytes, 72.0 * ghosts * substeps);
+  EXPECT_EQ(all[FixWire::COMM_SUBSTEP].messages, messages * substeps);
 }
