@@ -76,18 +76,19 @@ std::uint32_t segment_feature_at(double s)
 struct BodyAnswer {
   SegmentGrainContact &contact;
   double smallest_gap = 0.0;
-  void start()    // before the first point
-  {
-    contact = SegmentGrainContact{};
+  void start()    // before the first point (the caller's answer starts zeroed; add_point
+  {                // writes every field of a point but s_j, which stays 0 for a grain)
+    contact.count = 0;
     smallest_gap = INFINITY;
   }
 };
 
-// Adds the point on the segment `core_point` (body frame) with its closest core point
-// `on_grain`: position midway between the dilated surfaces, gap, normal from grain to
-// segment. Points with gap > activation are not reported.
-void add_point(const Vec3 &a, const Vec3 &b, const Vec3 &core_point, const Vec3 &normal, double core_distance,
-               double grain_radius, double wire_radius, double activation, std::uint64_t key, BodyAnswer &out)
+// Adds the point `core_point` of the segment (body frame, at parameter s along a -> b, known
+// to the caller from how it found the point) at core_distance from the core along the unit
+// normal from grain to segment: position midway between the dilated surfaces, gap. Points
+// with gap > activation are not reported.
+void add_point(const Vec3 &core_point, double s, const Vec3 &normal, double core_distance, double grain_radius,
+               double wire_radius, double activation, std::uint64_t key, BodyAnswer &out)
 {
   const double gap = core_distance - grain_radius - wire_radius;
   out.smallest_gap = std::min(out.smallest_gap, gap);
@@ -96,7 +97,7 @@ void add_point(const Vec3 &a, const Vec3 &b, const Vec3 &core_point, const Vec3 
   p.point = core_point + 0.5 * (grain_radius - wire_radius - core_distance) * normal;
   p.normal = normal;
   p.gap = gap;
-  p.s_i = closest_parameter_on_segment(a, b, core_point);
+  p.s_i = s;
   p.key = key;
 }
 
@@ -144,6 +145,7 @@ bool clip_to_face(const ShapeFeatures &features, int f, const FaceSides &sides, 
   const double guard = kDecisionMargin * scale.length;
   const Vec3 end[2] = {a, b};
   Vec3 core_point[2];
+  double s[2] = {0.0, 1.0};
   std::uint64_t key[2];
   for (int e = 0; e < 2; ++e) {
     const int k = sides.exit[e];
@@ -153,6 +155,7 @@ bool clip_to_face(const ShapeFeatures &features, int f, const FaceSides &sides, 
       continue;
     }
     core_point[e] = a + sides.at[e] * (b - a);
+    s[e] = sides.at[e];
     for (int j = 0; j < info.side_count; ++j) {    // inside the face's other side planes
       if (j == k) continue;
       const ShapeFeatures::Side &other = features.side(info.first_side + j);
@@ -166,7 +169,7 @@ bool clip_to_face(const ShapeFeatures &features, int f, const FaceSides &sides, 
   out.start();
   for (int e = 0; e < 2; ++e) {
     const double height = face.normal.dot(core_point[e]) - face.offset;
-    add_point(a, b, core_point[e], face.normal, height, shape.radius, wire_radius, activation, key[e], out);
+    add_point(core_point[e], s[e], face.normal, height, shape.radius, wire_radius, activation, key[e], out);
   }
   return true;
 }
@@ -189,9 +192,10 @@ bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const
   if (distance <= kNearTouchMargin * scale.length) return false;
   for (int k = 0; k < edge.faces; ++k)
     if (edge.outward[k].dot(d) < -1e-9 * distance) return false;    // over a face, not the edge
+  const Vec3 normal = d * (1.0 / distance);
   for (int k = 0; k < edge.faces; ++k) {
     const int f = shape.edge_faces[e][k];
-    const double misalignment = 1.0 - shape.faces[f].normal.dot(d) / distance;
+    const double misalignment = 1.0 - shape.faces[f].normal.dot(normal);
     // (the band leaves room for the round-off of the direction contact_segment_grain gets)
     if (misalignment <= (1.0 - 1e-4) * Tolerance::kFaceAlign) {
       FaceSides sides;
@@ -201,7 +205,7 @@ bool answer_from_edge(const ShapeFeatures &features, int e, const Vec3 &a, const
     if (misalignment < (1.0 + 1e-4) * Tolerance::kFaceAlign) return false;
   }
   out.start();
-  add_point(a, b, c.point_a, d / distance, distance, shape.radius, wire_radius, activation,
+  add_point(c.point_a, c.s, normal, distance, shape.radius, wire_radius, activation,
             make_key(segment_feature_at(c.s), edge_feature(edge.v0, edge.v1)), out);
   return true;
 }
@@ -242,7 +246,7 @@ bool answer_from_vertex(const ShapeFeatures &features, int v, const Vec3 &a, con
     if (along.dot(d) >= -kAngleMargin * distance * along.norm()) return false;
   }
   out.start();
-  add_point(a, b, on_segment, d / distance, distance, shape.radius, wire_radius, activation,
+  add_point(on_segment, s, d * (1.0 / distance), distance, shape.radius, wire_radius, activation,
             make_key(segment_feature_at(s), vertex_feature(v)), out);
   return true;
 }

@@ -31,6 +31,7 @@
 #include "math/types.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 namespace nscd::wire {
@@ -111,22 +112,25 @@ inline void store(const Vec3 &xi, TangentialHistory &h)
 
 // The contact frame turns between steps; the stored spring turns with it. Rotating (keep
 // the length, drop the normal part) rather than projecting keeps the stored elastic
-// energy, so a rolling-over contact does not leak friction force.
+// energy, so a rolling-over contact does not leak friction force. The length ratio is
+// the square root of the squared lengths' ratio (one root instead of two; the same to
+// round-off).
 inline Vec3 rotate_into_tangent_plane(const Vec3 &xi, const Vec3 &normal)
 {
-  const double length = xi.norm();
-  if (length == 0.0) return xi;
+  const double length_squared = xi.squaredNorm();
+  if (length_squared == 0.0) return xi;
   const Vec3 in_plane = xi - xi.dot(normal) * normal;
-  const double in_plane_length = in_plane.norm();
-  if (in_plane_length == 0.0) return Vec3::Zero();    // turned by 90 degrees: no memory left
-  return in_plane * (length / in_plane_length);
+  const double in_plane_squared = in_plane.squaredNorm();
+  if (in_plane_squared == 0.0) return Vec3::Zero();    // turned by 90 degrees: no memory left
+  return in_plane * std::sqrt(length_squared / in_plane_squared);
 }
 
 }    // namespace soft_contact_detail
 
-inline SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3 &normal,
-                                           double overlap, const Vec3 &relative_velocity, double dt,
-                                           TangentialHistory &history)
+__attribute__((always_inline)) inline SoftContactForce soft_contact_force(const SoftContactLaw &law,
+                                                                          const Vec3 &normal, double overlap,
+                                                                          const Vec3 &relative_velocity, double dt,
+                                                                          TangentialHistory &history)
 {
   using namespace soft_contact_detail;
   SoftContactForce out;
@@ -146,13 +150,15 @@ inline SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3
   const Vec3 tangential_velocity = relative_velocity - normal_speed * normal;
   Vec3 xi = rotate_into_tangent_plane(load(history), normal) + tangential_velocity * dt;
   const Vec3 trial = -(law.k_t * xi + law.gamma_t * tangential_velocity);
-  const double trial_magnitude = trial.norm();
   const bool was_sliding = history.sliding != 0.0;
   const double mu = was_sliding && law.slip_reset == SlipReset::ToDynamicLength ? law.mu_d : law.mu_s;
+  const double limit = mu * out.normal_force;
 
-  if (trial_magnitude > mu * out.normal_force) {
+  // |trial| > limit as squares (both >= 0): the root only for a slipping contact
+  const double trial_squared = trial.squaredNorm();
+  if (trial_squared > limit * limit) {
     out.slipped = true;
-    const Vec3 direction = trial / trial_magnitude;
+    const Vec3 direction = trial / std::sqrt(trial_squared);
     out.tangential_force = law.mu_d * out.normal_force * direction;
     if (law.slip_reset == SlipReset::ToDynamicLength && law.k_t > 0.0) {
       xi = -(law.mu_d * out.normal_force / law.k_t) * direction;

@@ -115,13 +115,14 @@ void load_states(WireNodeSet &nodes)
   Gear5Arrays &a = nodes.arrays;
   const std::size_t n = nodes.state.size();
   for (std::vector<double> &r : a.r) r.resize(3 * n);
-  a.mass.resize(3 * n);
+  a.acceleration_scale.resize(3 * n);
+  const double half_dt_squared = 0.5 * nodes.dt * nodes.dt;
   a.fixed.clear();
   a.fixed_position.clear();
   for (std::size_t i = 0; i < n; ++i) {
     for (int k = 0; k < 6; ++k)
       for (int d = 0; d < 3; ++d) a.r[k][3 * i + d] = nodes.state[i].r[k][d];
-    for (int d = 0; d < 3; ++d) a.mass[3 * i + d] = nodes.mass[i];
+    for (int d = 0; d < 3; ++d) a.acceleration_scale[3 * i + d] = half_dt_squared / nodes.mass[i];
     if (!nodes.fixed[i]) continue;
     // A fixed node is not integrated: with its derivatives zero the predictor leaves it
     // where it is, and the corrector's move is undone (correct_wire_nodes).
@@ -177,17 +178,19 @@ template <class T> __attribute__((always_inline)) inline void shift(T &r0, T &r1
 
 // Numbers j .. j + T::size() - 1 of the flat arrays (T: Pair, or one number as a 1 x 1
 // array for the last): gear5_correct with a = force / mass if `correct`, then
-// gear5_predict with the predicted position and velocity if `predict`.
+// gear5_predict with the predicted position and velocity and the force zeroed for the next
+// substep if `predict`. Multiplications by dt^2 / (2 m) and 1 / dt where those divide (two
+// divisions per number fewer).
 template <class T, bool correct, bool predict>
-__attribute__((always_inline)) inline void step_numbers(const Derivatives &d, const double *__restrict f,
-                                                        const double *__restrict mass, double scale, const double *c,
-                                                        double *__restrict x, double *__restrict v, double dt,
+__attribute__((always_inline)) inline void step_numbers(const Derivatives &d, double *__restrict f,
+                                                        const double *__restrict acceleration_scale, const double *c,
+                                                        double *__restrict x, double *__restrict v, double inverse_dt,
                                                         std::size_t j)
 {
   T r0 = load<T>(d.r[0] + j), r1 = load<T>(d.r[1] + j), r2 = load<T>(d.r[2] + j), r3 = load<T>(d.r[3] + j),
     r4 = load<T>(d.r[4] + j), r5 = load<T>(d.r[5] + j);
   if (correct) {
-    const T mismatch = scale * (load<T>(f + j) / load<T>(mass + j)) - r2;
+    const T mismatch = load<T>(f + j) * load<T>(acceleration_scale + j) - r2;
     r0 = r0 + c[0] * mismatch;
     r1 = r1 + c[1] * mismatch;
     r2 = r2 + c[2] * mismatch;
@@ -199,7 +202,8 @@ __attribute__((always_inline)) inline void step_numbers(const Derivatives &d, co
   if (predict) {
     shift<T>(r0, r1, r2, r3, r4, r5);
     store<T>(r0, x + j);
-    store<T>(r1 / dt, v + j);    // Gear5State::velocity
+    store<T>(r1 * inverse_dt, v + j);    // Gear5State::velocity
+    store<T>(T::Zero(), f + j);
   }
   store<T>(r0, d.r[0] + j);
   store<T>(r1, d.r[1] + j);
@@ -214,14 +218,20 @@ template <bool correct, bool predict> void step_all(WireNodeSet &nodes, const st
   Gear5Arrays &a = nodes.arrays;
   const Derivatives d(a.r);
   const std::size_t size = a.r[0].size();
-  const double *f = nodes.forces.empty() ? nullptr : nodes.forces[0].data();
+  double *f = flat(nodes.forces);
   double *x = flat(nodes.positions), *v = flat(nodes.velocities);
-  const double scale = 0.5 * nodes.dt * nodes.dt, dt = nodes.dt;
+  const double inverse_dt = 1.0 / nodes.dt;
   const double c[6] = {coefficients[0], coefficients[1], coefficients[2], coefficients[3], coefficients[4], coefficients[5]};
   std::size_t j = 0;
-  for (; j + 2 <= size; j += 2) step_numbers<Pair, correct, predict>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+  for (; j + 2 <= size; j += 2) step_numbers<Pair, correct, predict>(d, f, a.acceleration_scale.data(), c, x, v, inverse_dt, j);
   for (; j < size; ++j)
-    step_numbers<Eigen::Array<double, 1, 1>, correct, predict>(d, f, a.mass.data(), scale, c, x, v, dt, j);
+    step_numbers<Eigen::Array<double, 1, 1>, correct, predict>(d, f, a.acceleration_scale.data(), c, x, v, inverse_dt, j);
+}
+
+// The forces of the copies after the integrated nodes zeroed (step_all zeroes the nodes').
+void zero_copy_forces(WireNodeSet &nodes)
+{
+  for (std::size_t k = nodes.state.size(); k < nodes.forces.size(); ++k) nodes.forces[k].setZero();
 }
 
 // The fixed nodes back at rest where they were (after a correction; r_1 .. r_5 zero).
@@ -239,16 +249,17 @@ void hold_fixed_nodes(Gear5Arrays &a)
 }    // namespace
 
 // gear5_predict and the positions and velocities of the nodes, number by number along the
-// flat arrays: the same operations on each number in the same order, so the same result
-// to the last bit. All forces zeroed.
+// flat arrays: the same Taylor shift on each number in the same order (the positions equal
+// to the last bit; the velocities r_1 times 1 / dt, equal to round-off). All forces zeroed.
 void predict_wire_nodes(WireNodeSet &nodes)
 {
   step_all<false, true>(nodes, {});
-  for (Vec3 &f : nodes.forces) f.setZero();
+  zero_copy_forces(nodes);
 }
 
-// gear5_correct with a = force / mass along the flat arrays (the same operations in the
-// same order), then the fixed nodes put back at rest where they were.
+// gear5_correct along the flat arrays with the scaled acceleration force times dt^2 / (2 m)
+// (gear5_correct's force / mass times dt^2 / 2, to round-off), then the fixed nodes put back
+// at rest where they were.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients)
 {
   step_all<true, false>(nodes, coefficients);
@@ -263,7 +274,7 @@ void correct_and_predict_wire_nodes(WireNodeSet &nodes, const std::array<double,
     return;
   }
   step_all<true, true>(nodes, coefficients);
-  for (Vec3 &f : nodes.forces) f.setZero();
+  zero_copy_forces(nodes);
 }
 
 }    // namespace nscd::wire

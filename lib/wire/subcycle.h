@@ -81,7 +81,10 @@ class GrainForceAccumulator {
 // Filled from WireNodeSet::state before the substeps and written back after.
 struct Gear5Arrays {
   std::array<std::vector<double>, 6> r;
-  std::vector<double> mass;              // each node's mass, three times (one per coordinate)
+  // dt^2 / (2 m) of each node, three times (one per coordinate): the corrector's scaled
+  // acceleration is force times this (one multiplication instead of gear5_correct's
+  // division by the mass and multiplication by dt^2 / 2; equal to round-off)
+  std::vector<double> acceleration_scale;
   std::vector<int> fixed;                // the fixed nodes
   std::vector<double> fixed_position;    // and their positions, 3 numbers each
 };
@@ -120,7 +123,9 @@ void store_states(WireNodeSet &nodes);
 // Between load_states and store_states: predicts every free node and fills
 // nodes.positions / nodes.velocities; zeroes all forces (copies included).
 void predict_wire_nodes(WireNodeSet &nodes);
-// Corrects every free node with a = force / mass; fixed nodes stay put at rest.
+// Corrects every free node with a = force / mass (as force times dt^2 / (2 m), and the
+// velocity as r_1 times 1 / dt: gear5_correct and Gear5State::velocity to round-off);
+// fixed nodes stay put at rest.
 void correct_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);
 // correct_wire_nodes then predict_wire_nodes, in one pass over the arrays (the same result).
 void correct_and_predict_wire_nodes(WireNodeSet &nodes, const std::array<double, 6> &coefficients);

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <type_traits>
 #include <vector>
 
@@ -184,6 +185,77 @@ TEST(SoftContact, TangentialDampingAndFrictionlessFastPath)
   const SoftContactForce frictionless = soft_contact_force(law, Vec3::UnitZ(), 0.01, Vec3(0, 0.2, 0), 1e-3, h2);
   EXPECT_EQ(frictionless.tangential_force.norm(), 0.0);
   EXPECT_EQ(h2.xi[1], 0.0);
+}
+
+namespace {
+
+// The tangential part of the law as written before its roots were cut (soft_contact.h
+// takes one root for the spring's turn and compares |trial| with the Coulomb limit as
+// squares): the reference that soft_contact_force must equal to round-off.
+struct ReferenceTangential {
+  Vec3 force, xi;
+  bool slipped;
+  double trial, limit;    // |trial force| and the Coulomb limit it was held against
+};
+ReferenceTangential reference_tangential(const SoftContactLaw &law, const Vec3 &n, double overlap, const Vec3 &v,
+                                         double dt, const TangentialHistory &h)
+{
+  const double normal_speed = v.dot(n);
+  const double fn = std::max(0.0, law.k_n * overlap - law.gamma_n * normal_speed);
+  const Vec3 vt = v - normal_speed * n;
+  Vec3 xi(h.xi[0], h.xi[1], h.xi[2]);
+  const double length = xi.norm();
+  if (length > 0.0) {
+    const Vec3 in_plane = xi - xi.dot(n) * n;
+    xi = in_plane.norm() > 0.0 ? Vec3(in_plane * (length / in_plane.norm())) : Vec3::Zero();
+  }
+  xi += vt * dt;
+  const Vec3 trial = -(law.k_t * xi + law.gamma_t * vt);
+  const double mu = h.sliding != 0.0 ? law.mu_d : law.mu_s;
+  if (trial.norm() > mu * fn) {
+    const Vec3 direction = trial / trial.norm();
+    return {law.mu_d * fn * direction, -(law.mu_d * fn / law.k_t) * direction, true, trial.norm(), mu * fn};
+  }
+  return {trial, xi, false, trial.norm(), mu * fn};
+}
+
+}    // namespace
+
+TEST(SoftContact, EqualsTheLawWithTwoRootsToRoundOff)
+{
+  // Random turned springs, velocities and overlaps, sticking and slipping: the force, the
+  // spring and the slip decision as the law with a root per length (reference_tangential),
+  // to 1e-13 of the force's and the spring's size; a decision may differ only where
+  // |trial| is within 1e-12 of the limit. (Fails if the turn keeps the squared ratio, or if
+  // the slip test compares a square with a length.)
+  SoftContactLaw law = frictional_law();
+  law.gamma_t = 0.3;
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int slipped = 0, stuck = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec3 n = Vec3(u(rng), u(rng), u(rng)).normalized();
+    const Vec3 v = 0.05 * Vec3(u(rng), u(rng), u(rng));
+    const double overlap = 1e-3 * (1.0 + u(rng));
+    TangentialHistory h;
+    const double spring = 1e-3 * std::pow(10.0, 1.5 * u(rng));
+    for (int d = 0; d < 3; ++d) h.xi[d] = spring * u(rng);
+    h.sliding = trial % 3 == 0 ? 1.0 : 0.0;
+    const ReferenceTangential expected = reference_tangential(law, n, overlap, v, 1e-4, h);
+    TangentialHistory got_h = h;
+    const SoftContactForce got = soft_contact_force(law, n, overlap, v, 1e-4, got_h);
+    const Vec3 xi(got_h.xi[0], got_h.xi[1], got_h.xi[2]);
+    if (got.slipped != expected.slipped) {    // only at the threshold itself
+      EXPECT_NEAR(expected.trial, expected.limit, 1e-12 * expected.limit) << "trial " << trial;
+      continue;
+    }
+    (got.slipped ? slipped : stuck)++;
+    const double force_scale = std::max(expected.force.norm(), 1e-300), xi_scale = std::max(expected.xi.norm(), 1e-300);
+    EXPECT_LE((got.tangential_force - expected.force).norm(), 1e-13 * force_scale) << "trial " << trial;
+    EXPECT_LE((xi - expected.xi).norm(), 1e-13 * xi_scale) << "trial " << trial;
+  }
+  EXPECT_GT(slipped, 100);
+  EXPECT_GT(stuck, 100);
 }
 
 TEST(SoftContact, ValidationNamesTheBadValue)
