@@ -136,6 +136,12 @@ endforeach()
 add_subdirectory(${NSCD_LAMMPS_TREE}/cmake ${CMAKE_BINARY_DIR}/lammps)
 
 target_sources(lammps PRIVATE ${NSCD_PACKAGE_SOURCES})
+# Our warning flags on our sources only: LAMMPS' files in the same target keep LAMMPS' flags.
+# (TARGET_DIRECTORY: the targets live in LAMMPS' cmake/ directory; CMake 3.18 on.)
+if(NOT CMAKE_VERSION VERSION_LESS 3.18)
+  set_source_files_properties(${NSCD_PACKAGE_SOURCES} ${PROJECT_SOURCE_DIR}/src/main/lmp_main.cpp
+                              TARGET_DIRECTORY lammps PROPERTIES COMPILE_OPTIONS "${NSCD_WARNINGS}")
+endif()
 target_include_directories(lammps PRIVATE ${PROJECT_SOURCE_DIR}/src)
 if(BUILD_SHARED_LIBS)
   # liblammps.so holds nscd_core (static, position-independent) inside it: linked
