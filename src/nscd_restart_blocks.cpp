@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
 
 namespace LAMMPS_NS {
 namespace nscd_restart {
@@ -174,7 +175,11 @@ std::vector<Record> read_atom_records(const double *values, std::size_t availabl
     throw Damaged(atom + " states " + number(count) + " " + names.records + " in " + std::to_string(available) +
                   " values: the file is damaged");
   std::vector<Record> records((std::size_t) count);
-  if (!records.empty()) std::memcpy(records.data(), values + 2, records.size() * sizeof(Record));
+  // Bytes into constructed records: valid for a trivially copyable Record; through void *
+  // because GCC's -Wclass-memaccess asks for a trivial one.
+  static_assert(std::is_trivially_copyable<Record>::value, "a record is read back as bytes");
+  if (!records.empty())
+    std::memcpy(static_cast<void *>(records.data()), values + 2, records.size() * sizeof(Record));
   for (std::size_t k = 0; k < records.size(); k++) {
     check(records[k], k);
     if (owner(records[k]) != tag)

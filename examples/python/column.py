@@ -19,10 +19,10 @@ compute fabric/atom as a numpy array and reduced to the angle of its largest pri
 direction against r with nscd_analysis (the papers' Fig. 4). Writes PREFIX.png (height vs
 step, fabric angle vs r) and PREFIX.csv.
 
-Needs the lammps module built with this package (tools/build_python.sh) and nscd_analysis
-(pip-installed, doc/analysis.md, or tools/ on PYTHONPATH):
+Needs the lammps module built with this package (build/python, made by tools/build.sh) and
+nscd_analysis (pip-installed, doc/analysis.md, or tools/ on PYTHONPATH):
 
-    PYTHONPATH=build-python/python:tools /usr/bin/python3 examples/python/column.py -o column
+    PYTHONPATH=build/python:tools /usr/bin/python3 examples/python/column.py -o column
 
 Defaults: 2 layers of R = 2.5 (about 40 grains), about half a minute on one core.
 """
@@ -35,8 +35,7 @@ import numpy as np
 try:
     import lammps
 except ImportError:
-    sys.exit("column.py: no lammps module: build it with tools/build_python.sh and put build-python/python "
-             "on PYTHONPATH")
+    sys.exit("column.py: no lammps module: build it with tools/build.sh and put build/python on PYTHONPATH")
 try:
     from nscd_analysis import cylinder, fabric, fields
     from nscd_analysis.dumps import Snapshot
@@ -203,7 +202,7 @@ def main():
     lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     try:
         if not lmp.has_style("fix", "nscd"):
-            sys.exit("column.py: this lammps module has no fix nscd: build it with tools/build_python.sh")
+            sys.exit("column.py: this lammps module has no fix nscd: build it with tools/build.sh")
         history = []
         setup(lmp, a)
         build_column(lmp, a, history)

@@ -118,8 +118,8 @@ struct ElementCopy {
 // One copy of a grain: the same grain may appear more than once (periodic images, ghost
 // atoms); a contact uses the copy closest to the element's first node.
 struct GrainCopy {
-  std::int64_t id;
-  const Spheropolyhedron *shape;
+  std::int64_t id = 0;
+  const Spheropolyhedron *shape = nullptr;
   Pose pose;                        // held over the grain step
   Vec3 velocity = Vec3::Zero();     // of the centre
   Vec3 angular_velocity = Vec3::Zero();    // world frame

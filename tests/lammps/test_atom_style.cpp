@@ -140,7 +140,9 @@ class AtomStyleTest : public LammpsTest {
       EXPECT_EQ(p.type, q.type);
       EXPECT_EQ(p.shape, q.shape) << "atom " << kv.first;
       for (int k = 0; k < 3; k++) {
-        if (compare_positions) EXPECT_NEAR(p.x[k], q.x[k], tol);
+        if (compare_positions) {
+          EXPECT_NEAR(p.x[k], q.x[k], tol);
+        }
         EXPECT_NEAR(p.inertia[k], q.inertia[k], tol * std::abs(p.inertia[k]));
         EXPECT_NEAR(p.omega[k], q.omega[k], tol);
       }

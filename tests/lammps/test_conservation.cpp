@@ -231,6 +231,8 @@ TEST_F(ConservationTest, FreeClusterKeepsMomentumAngularMomentumAndDoesNotGainEn
         previous_kinetic = now.kinetic;
       }
       EXPECT_GE(steps_with_contacts, 10) << label << ": too few collisions to test anything";
-      if (e == 0.0) EXPECT_LT(measure().kinetic, 0.9 * start.kinetic) << label << ": inelastic";
+      if (e == 0.0) {
+        EXPECT_LT(measure().kinetic, 0.9 * start.kinetic) << label << ": inelastic";
+      }
     }
 }

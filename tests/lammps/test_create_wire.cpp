@@ -180,7 +180,9 @@ TEST_F(CreateWireTest, DoubleLoopWithGapFollowsTheHelix)
     EXPECT_DOUBLE_EQ(node.mass, 0.01);
     EXPECT_EQ(node.shape, 0);
     EXPECT_EQ(node.molecule, 1);
-    if (tag > 1) EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-12);
+    if (tag > 1) {
+      EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-12);
+    }
   }
   // the ends are at least the requested 20 degrees apart, less than one element more
   const double open = 4 * kPi - (expected - 1) * step;
@@ -319,7 +321,9 @@ TEST_F(CreateWireTest, StraightLineContinuedStraightIsOneWireAtRest)
     EXPECT_EQ(node.molecule, 1) << tag;
     EXPECT_EQ(node.type, 1) << tag;
     EXPECT_DOUBLE_EQ(node.mass, 0.01) << tag;    // the end's mass
-    if (tag > 1) EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-12) << tag;
+    if (tag > 1) {
+      EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-12) << tag;
+    }
   }
   const auto b = bonds();
   EXPECT_EQ(b.size(), 20u);
@@ -328,10 +332,14 @@ TEST_F(CreateWireTest, StraightLineContinuedStraightIsOneWireAtRest)
   EXPECT_EQ(a.size(), 19u);
   EXPECT_TRUE(a.count({10, 11, 12, 1})) << "the joint at the end";
   EXPECT_TRUE(a.count({11, 12, 13, 1})) << "the joint at the first new node";
-  if (ranks() > 1) EXPECT_NE(owner(11), owner(12)) << "the join should cross a rank cut";
+  if (ranks() > 1) {
+    EXPECT_NE(owner(11), owner(12)) << "the join should cross a rank cut";
+  }
   // special lists rebuilt: the end has two 1-2 neighbours now
   const int i = lmp->atom->map(11);
-  if (i >= 0 && i < lmp->atom->nlocal) EXPECT_EQ(lmp->atom->nspecial[i][0], 2);
+  if (i >= 0 && i < lmp->atom->nlocal) {
+    EXPECT_EQ(lmp->atom->nspecial[i][0], 2);
+  }
 
   commands({"special_bonds lj 0 0 0", "run 0 post no"});
   EXPECT_NEAR(summed(lmp->force->bond->energy), 0.0, 1e-20);
@@ -379,7 +387,9 @@ TEST_F(CreateWireTest, HelixRiserHelixIsOneChain)
   const auto all = nodes();
   for (auto &[tag, node] : all) {
     EXPECT_EQ(node.molecule, 1) << tag;
-    if (tag > 1) EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-9) << tag;
+    if (tag > 1) {
+      EXPECT_NEAR(distance(node, all.at(tag - 1)), 0.2, 1e-9) << tag;
+    }
   }
 }
 

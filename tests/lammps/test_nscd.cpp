@@ -958,7 +958,9 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwnContact
       MPI_Allreduce(&owning, &ranks_owning, 1, MPI_INT, MPI_SUM, fewer);
       EXPECT_EQ(read[2], 0.0) << size << " ranks: records of other ranks' contacts";
       EXPECT_EQ(read[0], written[0]) << size << " ranks";
-      if (ranks_owning > 1) EXPECT_LT(read[1], read[0]) << size << " ranks";
+      if (ranks_owning > 1) {
+        EXPECT_LT(read[1], read[0]) << size << " ranks";
+      }
       run("run 1");
       EXPECT_LE(fix_value("solver", 0), first_sweeps + 2) << size << " ranks";
       run("run 99");
@@ -1008,7 +1010,9 @@ TEST_F(NSCDTest, RestartOfFormat3IsReadIntoTheAtoms)
   // the 2 upper cubes on 2 lower ones each and the 3 lower on the floor, 4 points each: 28
   // contacts, the 16 between cubes kept by both cubes
   EXPECT_EQ(held[0], 2 * 16 + 12);
-  if (ranks_owning_atoms() > 1) EXPECT_LT(held[1], held[0]);
+  if (ranks_owning_atoms() > 1) {
+    EXPECT_LT(held[1], held[0]);
+  }
   run("run 1");
   const double warm = fix_value("solver", 0);
   commands({"unfix solver", "fix cold all nscd tolerance 1e-9 max_sweeps 5000 check 1", "run 1"});
@@ -1190,7 +1194,9 @@ TEST_F(NSCDTest, AcceleratedMethodsGiveGaussSeidelsPileForces)
                   pairs / mean_weight);
     EXPECT_LT(grains, 1e-3 * mean_weight) << method;
     const bool stays_near_the_warm_start = method.find("coarse") == std::string::npos;
-    if (stays_near_the_warm_start) EXPECT_LT(pairs, 2e-3 * mean_weight) << method;
+    if (stays_near_the_warm_start) {
+      EXPECT_LT(pairs, 2e-3 * mean_weight) << method;
+    }
   }
 }
 

@@ -553,7 +553,9 @@ TEST_F(WireOnGrainTest, FrictionHistorySurvivesItsNodeChangingRankMidRun)
                 "at most %.3g over the crossing; memories %g -> %g (most on one rank %g, of other ranks %g)\n",
                 ranks(), owner_before, owner_after, resting, most, before[0], after[0], after[1], after[2]);
   EXPECT_EQ(steps, 401);    // the run's setup and 400 steps
-  if (ranks() > 1) EXPECT_NE(owner_before, owner_after) << "the wire did not change rank";
+  if (ranks() > 1) {
+    EXPECT_NE(owner_before, owner_after) << "the wire did not change rank";
+  }
   EXPECT_GT(resting, 0.9 * 0.05 * 0.2 / std::sqrt(1.04));    // friction holds the weight's x component
   EXPECT_LT(most, 1e-6 * resting);
   EXPECT_GE(before[0], 4.0);    // one contact per element at least
@@ -605,7 +607,9 @@ TEST_F(WireOnGrainTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwn
       MPI_Allreduce(&owning, &ranks_owning, 1, MPI_INT, MPI_SUM, fewer);
       EXPECT_EQ(read[2], 0.0) << size << " ranks: memories of other ranks' contacts";
       EXPECT_EQ(read[0], written[0]) << size << " ranks";
-      if (ranks_owning > 1) EXPECT_LT(read[1], read[0]) << size << " ranks";
+      if (ranks_owning > 1) {
+        EXPECT_LT(read[1], read[0]) << size << " ranks";
+      }
       run("run 1");
       const double off_first = largest_difference(positions_of(lmp, 5, fewer), first);
       run("run 99");
@@ -643,7 +647,9 @@ TEST_F(WireTest, RestartOfFormat3IsReadIntoTheNodes)
   MPI_Allreduce(&owning, &ranks_owning, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
   EXPECT_EQ(held[2], 0.0);
   EXPECT_EQ(held[0], 4.0);
-  if (ranks_owning > 1) EXPECT_LT(held[1], held[0]);
+  if (ranks_owning > 1) {
+    EXPECT_LT(held[1], held[0]);
+  }
   run("run 100");
   std::ifstream in(data + "/wire_format3.after100");
   std::string line;
@@ -1006,7 +1012,9 @@ double CrossingWiresTest::moved_across_balance(bool rebuild_every_step)
   run("run 50");
   std::printf("[ crossing ] node 1 owned by rank %d, then %d; B moved by %.3g while sticking\n",
               owner, owner_of_node_1(), b_position(0) - before);
-  if (ranks() > 1) EXPECT_NE(owner_of_node_1(), owner);    // the contact changed rank
+  if (ranks() > 1) {
+    EXPECT_NE(owner_of_node_1(), owner);    // the contact changed rank
+  }
   return b_position(0) - before;
 }
 

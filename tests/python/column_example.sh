@@ -12,7 +12,7 @@
 # ----------------------------------------------------------------------
 
 # examples/python/column.py through LAMMPS' Python module built with this package
-# (tools/build_python.sh): a small wired column built and run in-process; its height and
+# (build/python, cmake/LammpsWithPackage.cmake): a small wired column built and run in-process; its height and
 # fabric angle written as PNG and CSV. The column must stand (height above one grain
 # layer, 0.8), the fabric angle must be measured in some r bin, and the module must be the
 # build's, with fix nscd. Exits 77 (CTest: skipped) when the module is not built.
@@ -22,7 +22,7 @@ set -euo pipefail
 module=$1 src=$2 work=$3
 python=${NSCD_PYTHON:-/usr/bin/python3}
 if [ ! -f "$module/lammps/__init__.py" ] || [ ! -e "$module/lammps/liblammps.so" ]; then
-  echo "SKIPPED: no lammps Python module with liblammps.so in $module: build it with tools/build_python.sh"
+  echo "SKIPPED: no lammps Python module with liblammps.so in $module: configure with -DNSCD_LAMMPS_SHARED=ON (the default)"
   exit 77
 fi
 rm -rf "$work" && mkdir -p "$work" && cd "$work"

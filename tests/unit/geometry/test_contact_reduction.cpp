@@ -170,8 +170,9 @@ TEST(ContactReduction, RandomGrainsRestingOnAPlaneNeverDropAPenetratingVertex)
       reduced += in_band > ContactSet::kMaxPoints;
       for (size_t k = 0; k < gaps.size(); ++k) {
         const bool kept = has_key(set, wall_key(static_cast<int>(k)));
-        if (gaps[k] <= 0.0 || in_band <= ContactSet::kMaxPoints)
+        if (gaps[k] <= 0.0 || in_band <= ContactSet::kMaxPoints) {
           EXPECT_EQ(kept, gaps[k] <= activation) << "grain " << g << " trial " << trial << " vertex " << k << " gap " << gaps[k];
+        }
       }
       for (const auto &p : set) EXPECT_LE(p.gap, activation);
       expect_unique_keys(set);
@@ -217,7 +218,9 @@ TEST(ContactReduction, RandomGrainsAgainstACylinderNeverDropAPenetratingVertex)
       EXPECT_EQ(set.count, std::min(in_band, ContactSet::kMaxPoints));
       for (size_t k = 0; k < grain.vertices.size(); ++k) {
         const double gap = vertex_gap(grain.vertices[k]);
-        if (gap <= 0.0) EXPECT_TRUE(has_key(set, wall_key(static_cast<int>(k)))) << "gap " << gap;
+        if (gap <= 0.0) {
+          EXPECT_TRUE(has_key(set, wall_key(static_cast<int>(k)))) << "gap " << gap;
+        }
       }
       expect_unique_keys(set);
     }

@@ -181,8 +181,11 @@ TEST(Gear5, LongRunEnergyDriftIsSmallAndOfKnownSign)
     std::printf("[gear5] c0=%s: relative energy drift per period at w dt = 0.05: %.3e\n",
                 kind == GearCorrector::ThreeSixteenths ? "3/16" : "3/20", drift_per_period);
     EXPECT_LT(std::abs(drift_per_period), 1e-7);
-    if (kind == GearCorrector::ThreeSixteenths) EXPECT_LT(drift_per_period, 0.0);
-    else EXPECT_GT(drift_per_period, 0.0);
+    if (kind == GearCorrector::ThreeSixteenths) {
+      EXPECT_LT(drift_per_period, 0.0);
+    } else {
+      EXPECT_GT(drift_per_period, 0.0);
+    }
   }
 }
 
