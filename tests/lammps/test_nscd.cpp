@@ -1327,7 +1327,7 @@ TEST_F(NSCDTest, RestingPyramidStaysPutThroughShiftAndRcbBalance)
 TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
 {
   const double steps = 20;
-  for (const std::string &layout : {"brick", "tiled"}) {
+  for (const std::string layout : {"brick", "tiled"}) {
     if (layout == "tiled") restart_instance();
     commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array",
               layout == "brick" ? "boundary f p f" : "boundary f f f", "processors * 1 1",
@@ -1355,8 +1355,12 @@ TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
                   all[FixNSCD::COMM_SWEEP].bytes, all[FixNSCD::COMM_GHOST_STATE].messages,
                   all[FixNSCD::COMM_GHOST_STATE].bytes, all[FixNSCD::COMM_STEP].messages,
                   all[FixNSCD::COMM_STEP].bytes);
-    if (layout == "brick") EXPECT_GE(ghosts[0], remote + 4.0);    // the images of both cubes on each side
-    if (layout == "tiled" && ranks() > 1) EXPECT_GE(ghosts[0], 2.0);
+    if (layout == "brick") {
+      EXPECT_GE(ghosts[0], remote + 4.0);    // the images of both cubes on each side
+    }
+    if (layout == "tiled" && ranks() > 1) {
+      EXPECT_GE(ghosts[0], 2.0);
+    }
     EXPECT_GE(exchanges, steps) << layout;
     EXPECT_EQ(all[FixNSCD::COMM_SWEEP].bytes, 96.0 * remote * exchanges) << layout;
     EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].atoms, remote * steps) << layout;
