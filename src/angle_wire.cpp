@@ -48,13 +48,14 @@ void AngleWire::allocate()
   memory->create(setflag, n + 1, "angle:setflag");
   for (int i = 1; i <= n; i++) setflag[i] = 0;
   stiffness.assign(n + 1, 0.0);
+  rest.assign(n + 1, 0.0);
 }
 
 nscd::wire::BendingForces AngleWire::joint(int type, const double *a, const double *b,
                                            const double *c) const
 {
   try {
-    return nscd::wire::bending_node_forces(stiffness[type], vec3(a), vec3(b), vec3(c));
+    return nscd::wire::bending_node_forces(stiffness[type], vec3(a), vec3(b), vec3(c), rest[type]);
   } catch (std::exception &e) {
     error->one(FLERR, "angle_style wire: angle of type {}: {}; two wire nodes of a joint "
                "coincide (check the initial positions)", type, e.what());
@@ -88,11 +89,12 @@ void AngleWire::compute(int eflag, int vflag)
   }
 }
 
-/* angle_coeff N k_rot */
+/* angle_coeff N k_rot [theta0]: theta0 in degrees as LAMMPS' other angle styles (180: a
+   straight wire at rest); kept as the turn at rest nu0 = pi - theta0 in radians. */
 void AngleWire::coeff(int narg, char **arg)
 {
-  if (narg != 2)
-    error->all(FLERR, "angle_coeff for angle_style wire: expected 'angle_coeff N k_rot', got {} "
+  if (narg != 2 && narg != 3)
+    error->all(FLERR, "angle_coeff for angle_style wire: expected 'angle_coeff N k_rot [theta0]', got {} "
                "arguments", narg);
   if (!allocated) allocate();
   int ilo, ihi;
@@ -100,41 +102,69 @@ void AngleWire::coeff(int narg, char **arg)
   const double k = nscd_args::number(lmp, "angle_coeff wire", "k_rot", arg[1]);
   if (!(k >= 0.0) || !std::isfinite(k))
     error->all(FLERR, "angle_coeff wire: k_rot = {} must be a finite moment >= 0 (k_rot = EI / l)", k);
+  const double theta0 = narg == 3 ? nscd_args::number(lmp, "angle_coeff wire", "theta0", arg[2]) : 180.0;
+  if (!(theta0 > 0.0 && theta0 <= 180.0))
+    error->all(FLERR, "angle_coeff wire: theta0 = {} must be an angle in degrees in (0, 180] (180: straight at "
+               "rest; a loop of radius R with elements l: 180 - 2 asin(l / 2R) in degrees)", theta0);
   for (int i = ilo; i <= ihi; i++) {
     stiffness[i] = k;
+    rest[i] = (180.0 - theta0) * MathConst::MY_PI / 180.0;
     setflag[i] = 1;
   }
 }
 
-// A straight wire is the rest state: LAMMPS' angle pi.
-double AngleWire::equilibrium_angle(int /*type*/)
+double AngleWire::equilibrium_angle(int type)
 {
-  return MathConst::MY_PI;
+  return MathConst::MY_PI - rest[type];
 }
+
+/* The coefficients behind a marker a stiffness cannot have (k_rot >= 0), then the rest turns:
+   files written before the rest turn existed hold k_rot alone and are read as straight. */
+static constexpr double RESTART_WITH_REST_TURN = -2.0;
 
 void AngleWire::write_restart(FILE *fp)
 {
-  fwrite(&stiffness[1], sizeof(double), atom->nangletypes, fp);
+  const int n = atom->nangletypes;
+  if (n == 0) return;
+  fwrite(&RESTART_WITH_REST_TURN, sizeof(double), 1, fp);
+  fwrite(&stiffness[1], sizeof(double), n, fp);
+  fwrite(&rest[1], sizeof(double), n, fp);
 }
 
 void AngleWire::read_restart(FILE *fp)
 {
   allocate();
   const int n = atom->nangletypes;
-  if (comm->me == 0) utils::sfread(FLERR, &stiffness[1], sizeof(double), n, fp, nullptr, error);
+  if (n == 0) return;
+  if (comm->me == 0) {
+    double first;
+    utils::sfread(FLERR, &first, sizeof(double), 1, fp, nullptr, error);
+    if (first == RESTART_WITH_REST_TURN) {
+      utils::sfread(FLERR, &stiffness[1], sizeof(double), n, fp, nullptr, error);
+      utils::sfread(FLERR, &rest[1], sizeof(double), n, fp, nullptr, error);
+    } else {
+      stiffness[1] = first;
+      if (n > 1) utils::sfread(FLERR, &stiffness[2], sizeof(double), n - 1, fp, nullptr, error);
+    }
+  }
   MPI_Bcast(&stiffness[1], n, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&rest[1], n, MPI_DOUBLE, 0, world);
   for (int i = 1; i <= n; i++) {
     if (!(stiffness[i] >= 0.0) || !std::isfinite(stiffness[i]))
       error->all(FLERR, "angle_style wire: the restart file's k_rot = {} of angle type {} is damaged (a finite "
                  "moment >= 0 was written); write the restart again, or give it with angle_coeff after a data "
                  "file", stiffness[i], i);
+    if (!(rest[i] >= 0.0 && rest[i] < MathConst::MY_PI))
+      error->all(FLERR, "angle_style wire: the restart file's rest turn {} of angle type {} is damaged (an angle "
+                 "in [0, pi) was written); write the restart again, or give theta0 with angle_coeff", rest[i], i);
     setflag[i] = 1;
   }
 }
 
 void AngleWire::write_data(FILE *fp)
 {
-  for (int i = 1; i <= atom->nangletypes; i++) fprintf(fp, "%d %.17g\n", i, stiffness[i]);
+  for (int i = 1; i <= atom->nangletypes; i++)
+    fprintf(fp, "%d %.17g %.17g\n", i, stiffness[i], 180.0 - rest[i] * 180.0 / MathConst::MY_PI);
 }
 
 double AngleWire::single(int type, int i1, int i2, int i3)

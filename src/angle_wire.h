@@ -12,9 +12,10 @@
    Contributing author: the NSCD package developers
 ------------------------------------------------------------------------- */
 
-/* angle_style wire: the rotational spring at a wire node, moment M = k_rot * nu with
-   nu = pi - theta (theta = LAMMPS' angle, so nu = 0 for a straight wire), energy
-   k_rot nu^2 / 2 (lib/wire/elastic_forces.h). k_rot = EI / l for element length l.
+/* angle_style wire: the rotational spring at a wire node, moment M = k_rot * (nu - nu0) with
+   nu = pi - theta (theta = LAMMPS' angle, so nu = 0 for a straight wire) and nu0 = pi - theta0
+   the turn at rest (0 unless angle_coeff gives theta0), energy k_rot (nu - nu0)^2 / 2
+   (lib/wire/elastic_forces.h). k_rot = EI / l for element length l.
    fix wire calls the same kernel through joint() in its subcycle. See doc/angle_style_wire.md. */
 
 #ifdef ANGLE_CLASS
@@ -52,6 +53,7 @@ class AngleWire : public Angle {
   double single(int, int, int, int) override;
 
   double k_rot(int type) const { return stiffness[type]; }
+  double rest_turn(int type) const { return rest[type]; }    // nu0 = pi - theta0, radians
 
   // Forces of the joint a-b-c (b = the node carrying the spring) of angle type `type`;
   // a LAMMPS error if an element has zero length.
@@ -59,6 +61,7 @@ class AngleWire : public Angle {
 
  private:
   std::vector<double> stiffness;    // k_rot per angle type, index 1..nangletypes
+  std::vector<double> rest;         // nu0 per angle type (0: straight at rest)
 
   void allocate();
 };

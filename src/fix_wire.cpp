@@ -684,7 +684,7 @@ void FixWire::index_atoms()
   }
   for (int n = 0; angle && n < neighbor->nanglelist; n++) {
     const int *a = neighbor->anglelist[n];
-    t.joints.push_back({node(a[0]), node(a[1]), node(a[2]), angle->k_rot(a[3])});
+    t.joints.push_back({node(a[0]), node(a[1]), node(a[2]), angle->k_rot(a[3]), angle->rest_turn(a[3])});
   }
   std::sort(t.elements.begin(), t.elements.end(), [](const auto &p, const auto &q) { return p.a < q.a; });
   std::sort(t.joints.begin(), t.joints.end(), [](const auto &p, const auto &q) { return p.b < q.b; });

@@ -124,9 +124,10 @@ __attribute__((always_inline)) inline bool axial_law(const AxialLaw &law, double
 }
 
 // The rotational spring between elements of unit directions uh, wh and inverse lengths
-// inv_lu, inv_lw: forces on the outer nodes a and c (on b: minus their sum), returns nu.
-__attribute__((always_inline)) inline double bending_law(double k_rot, const Vec3 &uh, double inv_lu, const Vec3 &wh, double inv_lw, Vec3 &on_a,
-                          Vec3 &on_c)
+// inv_lu, inv_lw, turn rest_turn at rest: forces on the outer nodes a and c (on b: minus
+// their sum), returns nu.
+__attribute__((always_inline)) inline double bending_law(double k_rot, double rest_turn, const Vec3 &uh, double inv_lu, const Vec3 &wh,
+                                                        double inv_lw, Vec3 &on_a, Vec3 &on_c)
 {
   const double cosine = dot3(uh, wh);
   const double sine = length3(uh.cross(wh));
@@ -137,8 +138,9 @@ __attribute__((always_inline)) inline double bending_law(double k_rot, const Vec
   // unit to round-off (1e-16 / sin relative): cheap and exact enough while sin > 1e-6.
   // Closer to 0 or pi each is normalised by its own length, which keeps |F_a| = k nu / |u|
   // exact; at nu == pi exactly every perpendicular is equally steep and unit_or_zero
-  // returns zero, the symmetric choice.
-  const double moment = k_rot * angle;
+  // returns zero, the symmetric choice (so does nu == 0 exactly, where a rest turn's cone
+  // has its tip). angle - 0.0 is angle: a straight rest shape keeps every bit.
+  const double moment = k_rot * (angle - rest_turn);
   Vec3 p_u = wh - cosine * uh, p_w = uh - cosine * wh;
   if (sine > 1e-6) {
     p_u *= 1.0 / sine;
@@ -164,15 +166,16 @@ AxialForces axial_element_forces(const AxialLaw &law, double rest_length, const 
   return out;
 }
 
-BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, const Vec3 &c)
+BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, const Vec3 &c, double rest_turn)
 {
   const Vec3 u = b - a;
   const Vec3 w = c - b;
   const double inv_lu = 1.0 / checked_length(u, "the element before a bent node");
   const double inv_lw = 1.0 / checked_length(w, "the element after a bent node");
   BendingForces out;
-  out.angle = bending_law(k_rot, u * inv_lu, inv_lu, w * inv_lw, inv_lw, out.on_a, out.on_c);
-  out.energy = 0.5 * k_rot * out.angle * out.angle;
+  out.angle = bending_law(k_rot, rest_turn, u * inv_lu, inv_lu, w * inv_lw, inv_lw, out.on_a, out.on_c);
+  const double bend = out.angle - rest_turn;
+  out.energy = 0.5 * k_rot * bend * bend;
   out.on_b = -(out.on_a + out.on_c);
   return out;
 }
@@ -205,21 +208,21 @@ __attribute__((always_inline)) inline bool element_law(const WireElement &e, con
 
 // One joint of add_elastic_forces (k_rot != 0): forces on a and c (on b: minus their sum),
 // returns the node angle.
-__attribute__((always_inline)) inline double joint_law(const WireJoint &j, double k_rot, const std::vector<Vec3> &positions,
-                                                       Vec3 &on_a, Vec3 &on_c)
+__attribute__((always_inline)) inline double joint_law(const WireJoint &j, double k_rot, double rest_turn,
+                                                       const std::vector<Vec3> &positions, Vec3 &on_a, Vec3 &on_c)
 {
   const Vec3 u = positions[j.b] - positions[j.a], w = positions[j.c] - positions[j.b];
   const double inv_lu = 1.0 / checked_length(u, "the element before a bent node");
   const double inv_lw = 1.0 / checked_length(w, "the element after a bent node");
-  return bending_law(k_rot, u * inv_lu, inv_lu, w * inv_lw, inv_lw, on_a, on_c);
+  return bending_law(k_rot, rest_turn, u * inv_lu, inv_lu, w * inv_lw, inv_lw, on_a, on_c);
 }
 
 // The kernels' laws, inlined here without their result structs (whose zeroed vectors the
 // compiler did not elide: 5 % of fix wire's time went to zeroing them).
-template <class LawOf, class StiffnessOf>
+template <class LawOf, class StiffnessOf, class RestTurnOf>
 ElasticEnergy add_elastic_forces_with(const WireTopology &topology, const LawOf &law_of,
-                                      const StiffnessOf &k_rot_of, const std::vector<Vec3> &positions,
-                                      std::vector<Vec3> &forces)
+                                      const StiffnessOf &k_rot_of, const RestTurnOf &rest_turn_of,
+                                      const std::vector<Vec3> &positions, std::vector<Vec3> &forces)
 {
   ElasticEnergy energy;
   AxialForces axial;
@@ -234,11 +237,12 @@ ElasticEnergy add_elastic_forces_with(const WireTopology &topology, const LawOf 
     const double k_rot = k_rot_of(j);
     if (k_rot == 0.0) continue;    // a string: no bending work
     Vec3 on_a, on_c;
-    const double angle = joint_law(j, k_rot, positions, on_a, on_c);
+    const double rest_turn = rest_turn_of(j);
+    const double bend = joint_law(j, k_rot, rest_turn, positions, on_a, on_c) - rest_turn;
     forces[j.a] += on_a;
     forces[j.b] += -(on_a + on_c);
     forces[j.c] += on_c;
-    energy.bending += 0.5 * k_rot * angle * angle;
+    energy.bending += 0.5 * k_rot * bend * bend;
   }
   return energy;
 }
@@ -251,7 +255,7 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &a
 {
   return add_elastic_forces_with(
       topology, [&](const WireElement &) { return axial; }, [&](const WireJoint &) { return k_rot; },
-      positions, forces);
+      [](const WireJoint &) { return 0.0; }, positions, forces);
 }
 
 ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector<Vec3> &positions,
@@ -259,7 +263,7 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector
 {
   return add_elastic_forces_with(
       topology, [](const WireElement &e) { return e.law; }, [](const WireJoint &j) { return j.k_rot; },
-      positions, forces);
+      [](const WireJoint &j) { return j.rest_turn; }, positions, forces);
 }
 
 /* ---------------------------------------------------------------------- ElasticKernel */
@@ -281,7 +285,10 @@ bool same(const WireElement &p, const WireElement &q)
   return p.a == q.a && p.b == q.b && p.rest_length == q.rest_length && p.law.k_elo == q.law.k_elo &&
          p.law.resists_compression == q.law.resists_compression;
 }
-bool same(const WireJoint &p, const WireJoint &q) { return p.a == q.a && p.b == q.b && p.c == q.c && p.k_rot == q.k_rot; }
+bool same(const WireJoint &p, const WireJoint &q)
+{
+  return p.a == q.a && p.b == q.b && p.c == q.c && p.k_rot == q.k_rot && p.rest_turn == q.rest_turn;
+}
 
 [[noreturn]] void throw_bad_index(int index)
 {
@@ -329,7 +336,11 @@ void ElasticKernel::prepare(const WireTopology &topology)
     resists_[e] = elements[e].law.resists_compression ? 1.0 : 0.0;
   }
   k_rot_.resize(num_joints);
-  for (int j = 0; j < num_joints; ++j) k_rot_[j] = joints[j].k_rot;
+  rest_turn_.resize(num_joints);
+  for (int j = 0; j < num_joints; ++j) {
+    k_rot_[j] = joints[j].k_rot;
+    rest_turn_[j] = joints[j].rest_turn;
+  }
 
   // Runs of elements (v, v + 1), (v + 1, v + 2), ... one after the other in the list.
   element_runs_.clear();
@@ -419,7 +430,7 @@ void ElasticKernel::prepare(const WireTopology &topology)
 struct ElasticKernel::Columns {
   const double *x[3];
   double *direction[3], *inverse_length, *on_b[3], *on_a[3], *on_c[3];
-  const double *rest, *k_elo, *resists, *k_rot;
+  const double *rest, *k_elo, *resists, *k_rot, *rest_turn;
   double *element_energy, *joint_energy;    // null: no energies
 };
 
@@ -438,6 +449,7 @@ ElasticKernel::Columns ElasticKernel::columns(bool with_energy)
   a.k_elo = k_elo_.data();
   a.resists = resists_.data();
   a.k_rot = k_rot_.data();
+  a.rest_turn = rest_turn_.data();
   a.element_energy = with_energy ? element_energy_.data() : nullptr;
   a.joint_energy = with_energy ? joint_energy_.data() : nullptr;
   return a;
@@ -507,8 +519,9 @@ template <int L, class Columns> __attribute__((always_inline)) inline void joint
   const T cx = uy * wz - uz * wy, cy = uz * wx - ux * wz, cz = ux * wy - uy * wx;
   const T sine = ((cx * cx + cy * cy) + cz * cz).sqrt();
   const T angle = atan_small<T>(sine / cosine);
-  const T k = lanes<L>(a.k_rot + j);
-  const T moment = k * angle;
+  const T k = lanes<L>(a.k_rot + j), rest_turn = lanes<L>(a.rest_turn + j);
+  const T bend = angle - rest_turn;
+  const T moment = k * bend;
   const T inverse_sine = 1.0 / sine;
   const T scale_a = -(moment * lanes<L>(a.inverse_length + eu)), scale_c = moment * lanes<L>(a.inverse_length + eu + 1);
   put<L>(scale_a * ((wx - cosine * ux) * inverse_sine), a.on_a[0] + j);
@@ -517,13 +530,14 @@ template <int L, class Columns> __attribute__((always_inline)) inline void joint
   put<L>(scale_c * ((ux - cosine * wx) * inverse_sine), a.on_c[0] + j);
   put<L>(scale_c * ((uy - cosine * wy) * inverse_sine), a.on_c[1] + j);
   put<L>(scale_c * ((uz - cosine * wz) * inverse_sine), a.on_c[2] + j);
-  if (a.joint_energy) put<L>(0.5 * k * angle * angle, a.joint_energy + j);
+  if (a.joint_energy) put<L>(0.5 * k * bend * bend, a.joint_energy + j);
   // sine <= tan(pi/8) cosine, cosine > 0 and sine > 1e-6 in every lane (a difference of
   // two numbers has the sign of their difference, so > 0 here is < or > there)
   if ((kTanEighthPi * cosine - sine).min(cosine).min(sine - 1e-6).minCoeff() > 0.0) return;
   for (int l = 0; l < L; ++l) {
     Vec3 on_a, on_c;
-    const double nu = bending_law(k[l], Vec3(a.direction[0][eu + l], a.direction[1][eu + l], a.direction[2][eu + l]),
+    const double nu = bending_law(k[l], rest_turn[l],
+                                  Vec3(a.direction[0][eu + l], a.direction[1][eu + l], a.direction[2][eu + l]),
                                   a.inverse_length[eu + l],
                                   Vec3(a.direction[0][eu + l + 1], a.direction[1][eu + l + 1], a.direction[2][eu + l + 1]),
                                   a.inverse_length[eu + l + 1], on_a, on_c);
@@ -531,7 +545,7 @@ template <int L, class Columns> __attribute__((always_inline)) inline void joint
       a.on_a[d][j + l] = on_a[d];
       a.on_c[d][j + l] = on_c[d];
     }
-    if (a.joint_energy) a.joint_energy[j + l] = 0.5 * k[l] * nu * nu;
+    if (a.joint_energy) a.joint_energy[j + l] = 0.5 * k[l] * (nu - rest_turn[l]) * (nu - rest_turn[l]);
   }
 }
 
@@ -586,13 +600,13 @@ void ElasticKernel::single_joint(int j, const std::vector<Vec3> &positions, bool
 {
   const WireJoint &joint = topology_.joints[j];
   Vec3 a = Vec3::Zero(), c = Vec3::Zero();
-  double angle = 0.0;
-  if (joint.k_rot != 0.0) angle = joint_law(joint, joint.k_rot, positions, a, c);    // else a string
+  double bend = 0.0;
+  if (joint.k_rot != 0.0) bend = joint_law(joint, joint.k_rot, joint.rest_turn, positions, a, c) - joint.rest_turn;    // else a string
   for (int d = 0; d < 3; ++d) {
     on_a_[d][j] = a[d];
     on_c_[d][j] = c[d];
   }
-  if (with_energy) joint_energy_[j] = 0.5 * joint.k_rot * angle * angle;
+  if (with_energy) joint_energy_[j] = 0.5 * joint.k_rot * bend * bend;
 }
 
 Vec3 ElasticKernel::share(const Share &s) const

@@ -16,11 +16,12 @@
 //
 // The wire is a chain of point masses (nodes). Element (a,b) carries the tensile force
 // f = k_elo * strain, strain = (L - L0) / L0, so k_elo is a force (it plays the role of EA).
-// Node b between elements (a,b) and (b,c) carries the bending moment M = k_rot * nu, where nu
-// is the angle between the element directions b-a and c-b (0 for a straight wire), so k_rot
+// Node b between elements (a,b) and (b,c) carries the bending moment M = k_rot * (nu - nu0),
+// where nu is the angle between the element directions b-a and c-b (0 for a straight wire)
+// and nu0 the joint's turn at rest (0 unless the wire was given a rest curvature), so k_rot
 // is a moment (it plays the role of EI / l). Both laws derive from energies:
 //   E_axial   = k_elo * L0 * strain^2 / 2
-//   E_bending = k_rot * nu^2 / 2
+//   E_bending = k_rot * (nu - nu0)^2 / 2
 // and the kernels below return exactly -dE/dx on every node, so the forces sum to zero and
 // carry no net torque. They are pure functions of positions: the LAMMPS bond/angle styles
 // and the wire subcycle both call them. Derivations: doc/wire_model.md.
@@ -59,11 +60,14 @@ struct BendingForces {
   double angle = 0.0;    // nu in [0, pi]: angle between b-a and c-b
 };
 
-// Rotational spring at node b between elements (a,b) and (b,c), moment k_rot * nu.
-// Smooth through nu -> 0; at nu == pi exactly (wire folded back on itself) the direction
-// of the force is undefined and the forces are zero. Throws std::invalid_argument if an
-// element has zero length.
-BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, const Vec3 &c);
+// Rotational spring at node b between elements (a,b) and (b,c), moment k_rot * (nu - rest_turn)
+// (rest_turn = nu0 in [0, pi): the turn the joint has at rest; 0: straight). Smooth through
+// nu -> 0 when rest_turn is 0; with rest_turn > 0 the energy is a cone at nu = 0 (every plane
+// of bending is as good) and the force there is zero, the symmetric choice. At nu == pi
+// exactly (wire folded back on itself) the direction of the force is undefined and the
+// forces are zero. Throws std::invalid_argument if an element has zero length.
+BendingForces bending_node_forces(double k_rot, const Vec3 &a, const Vec3 &b, const Vec3 &c,
+                                  double rest_turn = 0.0);
 
 // atan2(sine, cosine) for sine >= 0, within 2 units in the last place of std::atan2 and
 // a third of its time or less (glibc's atan2 saves and restores the rounding mode; it
@@ -82,6 +86,7 @@ struct WireElement {
 struct WireJoint {
   int a, b, c;         // b is the node carrying the rotational spring
   double k_rot = 0.0;  // used by the add_elastic_forces overload without k_rot
+  double rest_turn = 0.0;    // nu0, the turn at rest (ignored by the overload with one k_rot)
 };
 struct WireTopology {
   std::vector<WireElement> elements;
@@ -99,8 +104,8 @@ struct ElasticEnergy {
 };
 
 // Adds the axial and bending forces of all elements and joints to forces (indexed like
-// positions; not cleared) and returns the elastic energy: with one law and k_rot for all,
-// or with each element's law and each joint's k_rot.
+// positions; not cleared) and returns the elastic energy: with one law and k_rot for all
+// (straight at rest), or with each element's law and each joint's k_rot and rest turn.
 ElasticEnergy add_elastic_forces(const WireTopology &topology, const AxialLaw &axial,
                                  double k_rot, const std::vector<Vec3> &positions,
                                  std::vector<Vec3> &forces);
@@ -151,7 +156,7 @@ class ElasticKernel {
   std::vector<Share> shares_;
   int nodes_ = 0;
   // per element: rest length, k_elo, 1 if it resists compression (contiguous for the runs)
-  std::vector<double> rest_, k_elo_, resists_, k_rot_;
+  std::vector<double> rest_, k_elo_, resists_, k_rot_, rest_turn_;
   // scratch: node positions by coordinate; per element its unit direction, 1 / length and
   // force on b; per joint the forces on a and c; energies
   std::array<std::vector<double>, 3> position_, direction_, on_b_, on_a_, on_c_;

@@ -290,6 +290,43 @@ TEST_F(WireTest, AngleMomentIsKrotTimesNodeAngle)
   EXPECT_NEAR(rows[0][1], 0.5 * k * nu * nu, 1e-12);           // single()
 }
 
+// theta0 (degrees, as LAMMPS' other angle styles) sets the turn at rest nu0 = pi - theta0: a
+// joint bent less than nu0 is bent further, the energy is k (nu - nu0)^2 / 2, and theta0
+// survives write_data/read_data and write_restart/read_restart.
+TEST_F(WireTest, AngleWithARestAngleBendsTowardItAndKeepsItThroughDataAndRestart)
+{
+  const double nu = 0.3, nu0 = 0.5, k = 2.0, l = 0.5;
+  const std::string theta0 = num(180.0 - nu0 * 180.0 / M_PI);
+  scene({{-l, 0, 0, 1}, {0, 0, 0, 1}, {l * std::cos(nu), l * std::sin(nu), 0, 1}}, 3, true, 0.0, l, k);
+  commands({"angle_coeff 1 " + num(k) + " " + theta0, "run 0"});
+  const double energy = 0.5 * k * (nu - nu0) * (nu - nu0);
+  EXPECT_NEAR(summed(lmp->force->angle->energy), energy, 1e-12);
+  EXPECT_NEAR(lmp->force->angle->equilibrium_angle(1), M_PI - nu0, 1e-14);
+  const std::vector<double> f1 = force_on(1);
+  EXPECT_NEAR(std::hypot(f1[0], f1[1]), k * (nu0 - nu) / l, 1e-10);
+  EXPECT_GT(f1[1], 0.0);    // bent further: end 1 pushed to +y, away from straightening
+  // (the nodes' masses are per atom; the hybrid style's per-type masses must be set for the
+  // data file to be read back)
+  commands({"mass * 1.0", "write_data " + scratch("rest.data"), "write_restart " + scratch("rest.restart")});
+
+  for (const std::string how : {"data", "restart"}) {
+    restart_instance();
+    if (how == "data") {
+      commands({"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array",
+                "shapes read " + scratch("shapes"), "pair_style zero 1.0", "bond_style wire", "angle_style wire",
+                "read_data " + scratch("rest.data")});
+    } else {
+      commands({"read_restart " + scratch("rest.restart"), "pair_style zero 1.0", "pair_coeff * *"});
+    }
+    run("run 0");
+    EXPECT_NEAR(lmp->force->angle->equilibrium_angle(1), M_PI - nu0, 1e-14) << how;
+    EXPECT_NEAR(summed(lmp->force->angle->energy), energy, 1e-12) << how;
+  }
+  EXPECT_NE(error_of("angle_coeff 1 1.0 0").find("theta0 = 0"), std::string::npos);
+  EXPECT_NE(error_of("angle_coeff 1 1.0 190").find("theta0 = 190"), std::string::npos);
+  EXPECT_NE(error_of("angle_coeff 1 1.0 120 7").find("[theta0]"), std::string::npos);
+}
+
 // ---------------------------------------------------------------- fix wire
 
 // fix wire vector: 1 stretch energy, 2 bending energy, 3 contact energy, 4 wire-wire
@@ -331,6 +368,59 @@ TEST_F(WireTest, CantileverDeflectsLikeTheDiscreteBeam)
   EXPECT_NEAR(delta / discrete, 1.0, 1e-4);
   EXPECT_NEAR(delta / beam, 1.0, 5e-3);    // -2.8e-3 discretisation error at N = 10
   std::printf("[ cantilever ] delta %.9g discrete %.9g beam %.9g\n", delta, discrete, beam);
+}
+
+// An open arc of a circle laid at its rest turn is at rest: no force anywhere, every node
+// stays put (to round-off) through the subcycle. The same arc with a straight rest shape
+// opens (its ends move apart), and a straight chain given that rest turn curls onto the
+// circle: with damping it comes to rest with each joint at nu0, i.e. every three
+// consecutive nodes on a circle of the arc's radius R = l / (2 sin(nu0 / 2)).
+TEST_F(WireTest, WireKeepsOrTakesTheCurvatureOfItsRestAngle)
+{
+  const int n = 13;
+  const double R = 1.0, l = 0.2, k_rot = 0.5;
+  const double nu0 = 2.0 * std::asin(l / (2.0 * R));
+  const std::string theta0 = num(180.0 - nu0 * 180.0 / M_PI);
+  std::vector<Point> arc;
+  for (int i = 0; i < n; i++) arc.push_back({R * std::cos(i * nu0), R * std::sin(i * nu0), 0.0, 0.01});
+  const auto span = [&]() {
+    const std::vector<double> a = position(1), b = position(n);
+    return std::hypot(b[0] - a[0], b[1] - a[1]);
+  };
+
+  scene(arc, n, true, 100.0, l, k_rot);
+  commands({"angle_coeff 1 " + num(k_rot) + " " + theta0, "group wire id 1:" + std::to_string(n),
+            "fix w wire wire damp 0.1", "run 500"});
+  double moved = 0.0;
+  for (int i = 0; i < n; i++) {
+    const std::vector<double> p = position(i + 1);
+    moved = std::max({moved, std::abs(p[0] - arc[i].x), std::abs(p[1] - arc[i].y), std::abs(p[2])});
+  }
+  EXPECT_LT(moved, 1e-12);
+  EXPECT_LT(fix_value("w", 1), 1e-20);    // bending energy
+
+  restart_instance();
+  scene(arc, n, true, 100.0, l, k_rot);    // straight at rest
+  const double laid = span();
+  commands({"group wire id 1:" + std::to_string(n), "fix w wire wire damp 0.1", "run 2000"});
+  std::printf("[ INFO     ] arc with a straight rest shape: span %.4f -> %.4f\n", laid, span());
+  EXPECT_GT(span(), 1.2 * laid);
+
+  restart_instance();
+  std::vector<Point> flat;    // an arc ten times wider: exactly straight, no plane is preferred
+  for (int i = 0; i < n; i++) flat.push_back({10 * R * std::sin(i * l / (10 * R)), 10 * R * (1 - std::cos(i * l / (10 * R))), 0.0, 0.01});
+  scene(flat, n, true, 100.0, l, k_rot);
+  commands({"angle_coeff 1 " + num(k_rot) + " " + theta0, "group wire id 1:" + std::to_string(n),
+            "fix w wire wire damp 0.1", "run 20000"});
+  std::printf("[ INFO     ] curled: kinetic energy %.3g\n", kinetic_energy(1, n));
+  EXPECT_LT(kinetic_energy(1, n), 1e-14);
+  for (int i = 1; i + 1 < n; i++) {
+    const std::vector<double> a = position(i), b = position(i + 1), c = position(i + 2);
+    const double ab = std::hypot(b[0] - a[0], b[1] - a[1]), bc = std::hypot(c[0] - b[0], c[1] - b[1]),
+                 ca = std::hypot(a[0] - c[0], a[1] - c[1]);
+    const double cross = std::abs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    EXPECT_NEAR(ab * bc * ca / (2.0 * cross), R, 1e-3 * R) << "circumradius at node " << i + 1;
+  }
 }
 
 TEST_F(WireTest, HangingChainSettlesOnTheCatenary)

@@ -203,6 +203,37 @@ TEST(BendingNode, FiniteForcesAtStraightAndFoldedLimits)
   EXPECT_NEAR(folded.energy, 0.5 * M_PI * M_PI, 1e-12);
 }
 
+TEST(BendingNode, RestTurnShiftsTheLawAndStaysMinusTheGradient)
+{
+  // With a turn nu0 at rest the moment is k_rot (nu - nu0) and the energy k_rot (nu - nu0)^2 / 2:
+  // zero force at nu = nu0 (a loop laid at its rest curvature holds its shape), a force
+  // bending the joint further below nu0 and straightening it above, always -grad E.
+  const double k_rot = 1.3;
+  for (double rest : {0.05, 0.3, 1.1}) {
+    const Nodes<3> at_rest = bent_nodes(rest, 0.8, 1.2);
+    const BendingForces held = bending_node_forces(k_rot, at_rest[0], at_rest[1], at_rest[2], rest);
+    EXPECT_NEAR(held.angle, rest, 1e-12);
+    EXPECT_LT(held.on_a.norm() + held.on_c.norm(), 1e-12 * k_rot) << "nu0=" << rest;
+    EXPECT_LT(held.energy, 1e-24);
+    for (double angle : {1e-4, 0.5 * rest, 2.0 * rest, 2.5, M_PI - 1e-3}) {
+      const Nodes<3> x = bent_nodes(angle, 0.8, 1.2);
+      const BendingForces f = bending_node_forces(k_rot, x[0], x[1], x[2], rest);
+      EXPECT_NEAR(f.energy, 0.5 * k_rot * (angle - rest) * (angle - rest), 1e-9) << angle;
+      EXPECT_NEAR(f.on_c.norm() * 1.2, k_rot * std::abs(angle - rest), 1e-8) << angle;    // moment balance
+      const auto energy = [&](const Nodes<3> &y) { return bending_node_forces(k_rot, y[0], y[1], y[2], rest).energy; };
+      const double h = 1e-7, tol = 2e-6 * k_rot;
+      EXPECT_LT((f.on_a + numerical_gradient<3>(energy, x, 0, h)).norm(), tol) << "nu=" << angle << " nu0=" << rest;
+      EXPECT_LT((f.on_b + numerical_gradient<3>(energy, x, 1, h)).norm(), tol) << "nu=" << angle << " nu0=" << rest;
+      EXPECT_LT((f.on_c + numerical_gradient<3>(energy, x, 2, h)).norm(), tol) << "nu=" << angle << " nu0=" << rest;
+      EXPECT_LT((f.on_a + f.on_b + f.on_c).norm(), 1e-12);
+    }
+  }
+  // Straight exactly: the cone's tip, every plane as good: zero force, the energy k nu0^2 / 2.
+  const BendingForces straight = bending_node_forces(1.0, Vec3(-1, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0), 0.4);
+  EXPECT_EQ(straight.on_a.norm() + straight.on_c.norm(), 0.0);
+  EXPECT_NEAR(straight.energy, 0.08, 1e-15);
+}
+
 TEST(ElasticForces, MomentumAndAngularMomentumConservedOnRandomWires)
 {
   // A random crooked 12-node wire: the sum of forces and of torques about an arbitrary
@@ -263,8 +294,9 @@ WireTopology mixed_topology(std::mt19937 &rng, int chains, std::vector<Vec3> &x)
     }
     for (int i = 1; i + 1 < n; ++i) {
       const double k_rot = u(rng) < 0.1 ? 0.0 : 0.01 + 0.01 * u(rng);
-      if (u(rng) < 0.1) t.joints.push_back({first + i + 1, first + i, first + i - 1, k_rot});    // reversed
-      else t.joints.push_back({first + i - 1, first + i, first + i + 1, k_rot});
+      const double rest_turn = u(rng) < 0.3 ? 0.4 * u(rng) : 0.0;    // some bent at rest
+      if (u(rng) < 0.1) t.joints.push_back({first + i + 1, first + i, first + i - 1, k_rot, rest_turn});    // reversed
+      else t.joints.push_back({first + i - 1, first + i, first + i + 1, k_rot, rest_turn});
     }
     if (n > 3 && u(rng) < 0.3) {    // a ring
       t.elements.push_back({first + n - 1, first, 0.06, AxialLaw{30.0, true}});
@@ -331,6 +363,9 @@ TEST(ElasticKernel, PreparedForItsTopologyOnlyAndRefusesWhatAddElasticForcesRefu
   EXPECT_TRUE(kernel.prepared_for(t));
   WireTopology other = t;
   other.joints[2].k_rot = 1.0;
+  EXPECT_FALSE(kernel.prepared_for(other));
+  other = t;
+  other.joints[2].rest_turn = 0.1;
   EXPECT_FALSE(kernel.prepared_for(other));
   other = t;
   other.elements[1].law.resists_compression = false;
