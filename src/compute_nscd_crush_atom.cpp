@@ -104,10 +104,10 @@ void ComputeNSCDCrushAtom::add_grain_contacts()
 void ComputeNSCDCrushAtom::add_wire_contacts()
 {
   const std::vector<double> rows = wire->contact_rows();
-  const size_t cols = FixWire::kContactColumns;
+  const size_t cols = FixWire::CONTACT_COLUMNS;
   std::map<std::pair<double, double>, double> per_element;
   for (size_t r = 0; r + cols <= rows.size(); r += cols)
-    if (rows[r + FixWire::ROW_KIND] == FixWire::kRowWireGrain)
+    if (rows[r + FixWire::ROW_KIND] == FixWire::ROW_WIRE_GRAIN)
       per_element[{rows[r + FixWire::ROW_NODE_1], rows[r + FixWire::ROW_OTHER]}] += rows[r + FixWire::ROW_NORMAL_FORCE];
   for (const auto &[key, force] : per_element) add_largest(key.second, force);
 }

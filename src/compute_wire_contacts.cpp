@@ -35,7 +35,7 @@ ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int narg, char **arg) : Co
                "'compute ID group wire/contacts')", arg[3]);
   local_flag = 1;
   size_local_rows = 0;
-  size_local_cols = FixWire::kContactColumns;
+  size_local_cols = FixWire::CONTACT_COLUMNS;
 }
 
 ComputeWireContacts::~ComputeWireContacts()
@@ -63,7 +63,7 @@ void ComputeWireContacts::compute_local()
 {
   invoked_local = update->ntimestep;
   const std::vector<double> rows = fix ? fix->contact_rows() : std::vector<double>();
-  const int cols = FixWire::kContactColumns, all = (int) (rows.size() / cols);
+  const int cols = FixWire::CONTACT_COLUMNS, all = (int) (rows.size() / cols);
   if (all > nmax) {
     nmax = all;
     memory->destroy(array_local);

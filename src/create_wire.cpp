@@ -55,8 +55,8 @@ using namespace LAMMPS_NS;
 using namespace nscd_arrays;
 
 namespace {
-constexpr double kDegree = M_PI / 180.0;
-constexpr double kLengthTolerance = 1e-6;    // elements this close to the rest length are unstrained
+constexpr double DEGREE = M_PI / 180.0;
+constexpr double LENGTH_TOLERANCE = 1e-6;    // elements this close to the rest length are unstrained
 }    // namespace
 
 struct CreateWire::Request {
@@ -157,7 +157,7 @@ void CreateWire::command(int narg, char **arg)
     };
     const double step = std::remainder(angle_of(r.layout.nodes[1]) - angle_of(r.layout.nodes[0]), 2.0 * M_PI);
     const double open = 2.0 * M_PI * r.loop.turns - (double) (n - 1) * std::abs(step);
-    end = fmt::format("open, ends {:.4g} degrees apart", open / kDegree);
+    end = fmt::format("open, ends {:.4g} degrees apart", open / DEGREE);
   } else if (!r.layout.closed) {
     end = fmt::format("open, last node {:.4g} before the path's end",
                       (r.layout.nodes.back() - r.polyline.points.back()).norm());
@@ -254,11 +254,11 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 2;
     } else if (key == "gap") {
       need(1);
-      r.loop.gap = number(iarg + 1) * kDegree;
+      r.loop.gap = number(iarg + 1) * DEGREE;
       iarg += 2;
     } else if (key == "start") {
       need(1);
-      r.loop.start = number(iarg + 1) * kDegree;
+      r.loop.start = number(iarg + 1) * DEGREE;
       iarg += 2;
     } else if (key == "axis") {
       need(3);
@@ -510,7 +510,7 @@ void CreateWire::lay_out()
     error->all(FLERR, "create_wire {}: {}", r.shape_name, e.what());
   }
   const double strain = r.layout.chord / r.rest_length - 1.0;
-  if (std::abs(strain) > kLengthTolerance && !r.strained)
+  if (std::abs(strain) > LENGTH_TOLERANCE && !r.strained)
     error->all(FLERR, "create_wire {}: its {} elements are {:.10g} long, but the rest length of bond "
                "type {} is {:.10g} (strain {:.3g}); give 'bond_coeff {} K_ELO {:.10g}', {}or add "
                "'strained yes' to start with that strain", r.shape_name,

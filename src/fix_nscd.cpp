@@ -676,7 +676,7 @@ void FixNSCD::keep_impulses_with_atoms()
   maxexchange = NSCDAtomImpulses::values_for(solver->atom_impulses.longest(0, atom->nlocal));
 }
 
-/* Collective. Reverse communication in rounds of at most kRecordsPerGhost records per ghost
+/* Collective. Reverse communication in rounds of at most RECORDS_PER_GHOST records per ghost
    (LAMMPS' variable-size reverse communication does not work with comm_style tiled), until
    no ghost holds any: each round moves records one hop towards their owners. */
 void FixNSCD::hand_ghost_records_to_owners()
@@ -695,7 +695,7 @@ void FixNSCD::hand_ghost_records_to_owners()
    value (how many ghosts send), covered by the place of any one ghost. */
 int FixNSCD::ghost_records_slot()
 {
-  return 1 + NSCDAtomImpulses::values_for(kRecordsPerGhost) + 1;
+  return 1 + NSCDAtomImpulses::values_for(RECORDS_PER_GHOST) + 1;
 }
 
 /* The record goes to the atom at atom_index (the contact's body) if that is still the
@@ -1147,8 +1147,8 @@ int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
     for (int k = 0; k < n; k++) {
       if (solver->atom_impulses.of(first + k).empty()) continue;
       buf[m++] = k;
-      const int packed = solver->atom_impulses.pack_last(first + k, kRecordsPerGhost, buf + m);
-      records_sent += (double) (packed - 1) / NSCDAtomImpulses::kValuesPerRecord;
+      const int packed = solver->atom_impulses.pack_last(first + k, RECORDS_PER_GHOST, buf + m);
+      records_sent += (double) (packed - 1) / NSCDAtomImpulses::VALUES_PER_RECORD;
       m += packed;
       sending++;
     }
@@ -1186,7 +1186,7 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
     for (int e = 0; e < sending; e++) {
       const int k = (int) buf[m++];
       const int read = solver->atom_impulses.unpack_append(list[k], buf + m);
-      records += (double) (read - 1) / NSCDAtomImpulses::kValuesPerRecord;
+      records += (double) (read - 1) / NSCDAtomImpulses::VALUES_PER_RECORD;
       m += read;
     }
     if (comm_counts.unpacked(COMM_RECORDS, n, m, buf)) records_received += records;

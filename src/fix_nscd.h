@@ -156,7 +156,7 @@ class FixNSCD : public Fix {
   void warm_start_contacts();
   void keep_impulses_with_atoms();
   void hand_ghost_records_to_owners();
-  static constexpr int kRecordsPerGhost = 4;    // per ghost and round of hand_ghost_records_to_owners
+  static constexpr int RECORDS_PER_GHOST = 4;    // per ghost and round of hand_ghost_records_to_owners
   // Values per ghost that a round may send: its place, count and records (plus one per message).
   static int ghost_records_slot();
   void keep_record_with(int atom_index, const nscd::ImpulseRecord &record);

@@ -65,7 +65,7 @@ namespace wire = nscd::wire;
 namespace {
 // A step of more wire substeps than this never ends in practice; more than the ratio times
 // what stability needs is warned about.
-constexpr int kMaxSubsteps = 1000000, kWarnSubstepsRatio = 10;
+constexpr int MAX_SUBSTEPS = 1000000, WARN_SUBSTEPS_RATIO = 10;
 
 enum Diagnostic {
   E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
@@ -83,7 +83,7 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
 {
   time_integrate = restart_global = restart_peratom = create_attribute = 1;
   maxexchange_dynamic = 1;    // the friction memories travel with their nodes
-  maxexchange = kGearColumns + 1;
+  maxexchange = GEAR_COLUMNS + 1;
   vector_flag = global_freq = 1;
   size_vector = (int) diagnostics.size();
   extvector = 0;
@@ -227,8 +227,8 @@ void FixWire::parse_grain_friction(int narg, char **arg, int &iarg)
 int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
 double FixWire::compute_vector(int n)
 {
-  if (n != kTensionDiagnostic && n != kRunTensionDiagnostic) return diagnostics[n];
-  double mine = n == kTensionDiagnostic ? largest_tension : largest_tension_in_run, all = 0.0;
+  if (n != TENSION_DIAGNOSTIC && n != RUN_TENSION_DIAGNOSTIC) return diagnostics[n];
+  double mine = n == TENSION_DIAGNOSTIC ? largest_tension : largest_tension_in_run, all = 0.0;
   MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   return all;
 }
@@ -396,7 +396,7 @@ void FixWire::plan_substeps()
                "'substeps auto' (default), a larger 'substeps N', a smaller 'dt_sp', or a smaller timestep",
                e.what(), stable_dt_sp);
   }
-  if (lib->plan.substeps > kWarnSubstepsRatio * needed && comm->me == 0)
+  if (lib->plan.substeps > WARN_SUBSTEPS_RATIO * needed && comm->me == 0)
     error->warning(FLERR, "fix wire: {} asks for {} wire substeps per step, {:.0f} times the {} the stability "
                    "limit needs: each step costs that much more wire time for no gain in stability; use "
                    "'substeps auto'", requested_substeps_text(), lib->plan.substeps,
@@ -404,14 +404,14 @@ void FixWire::plan_substeps()
 }
 
 /* More substeps than stability needs only cost time; far more is a mistake (a dt_sp meant
-   for another timestep or unit system), and beyond kMaxSubsteps a step never ends. */
+   for another timestep or unit system), and beyond MAX_SUBSTEPS a step never ends. */
 void FixWire::refuse_absurd_substeps(int needed)
 {
   const double asked = requested_dt_sp > 0.0 ? update->dt / requested_dt_sp : (double) requested_substeps;
-  if (asked > kMaxSubsteps && asked > needed)
+  if (asked > MAX_SUBSTEPS && asked > needed)
     error->all(FLERR, "fix wire: {} asks for {:.6g} wire substeps per step, more than {}: a step would take "
                "minutes; the stability limit needs {} (substeps stable)", requested_substeps_text(), asked,
-               kMaxSubsteps, needed);
+               MAX_SUBSTEPS, needed);
 }
 
 std::string FixWire::requested_substeps_text() const
@@ -528,13 +528,13 @@ void FixWire::warn_about_elements_inside_grains()
    create_bonds with one long element of a shared bond type, 'create_wire ... strained yes'
    with a wrong rest length, a hand-made data file): such an element pulls its nodes with
    k_elo x strain from the first substep and can fling them, and the grains they touch. Warned
-   about when the length is more than kStrainWarning (10 %) off the rest length: far beyond
+   about when the length is more than STRAIN_WARNING (10 %) off the rest length: far beyond
    what the examples' loads stretch (k_elo 5000: a strain of 1e-3 is a tension of 5) and what
    'strained yes' is meant for (a ring's chord a few % off). newton_bond on (fix wire's
    restriction): each element is in exactly one rank's bond list. */
 void FixWire::warn_about_strained_elements()
 {
-  constexpr double kStrainWarning = 0.1;
+  constexpr double STRAIN_WARNING = 0.1;
   if (!bond) return;
   double worst[2] = {0.0, (double) comm->me};    // |strain|, rank
   std::array<double, 5> found = {0.0, 0.0, 0.0, 0.0, 0.0};    // node IDs, length, rest length, k_elo
@@ -546,7 +546,7 @@ void FixWire::warn_about_strained_elements()
     const double strain = length / rest - 1.0;
     const wire::AxialLaw law = bond->law(type);
     if (strain < 0.0 && !law.resists_compression) continue;    // a slack string pulls nothing
-    if (!(std::abs(strain) > kStrainWarning)) continue;
+    if (!(std::abs(strain) > STRAIN_WARNING)) continue;
     count++;
     if (std::abs(strain) > worst[0]) {
       worst[0] = std::abs(strain);
@@ -565,7 +565,7 @@ void FixWire::warn_about_strained_elements()
                    "worst, nodes ID {} and {}, is {:.4g} long for a rest length of {:.4g} ({:.3g} x), a force of "
                    "k_elo x strain = {:.4g} on its nodes from the first step that can fling them and the grains they "
                    "touch. Join wires with 'create_wire ... from ID' (elements at the rest length), or give such an "
-                   "element a bond type of its own rest length", id, total, 100.0 * kStrainWarning,
+                   "element a bond type of its own rest length", id, total, 100.0 * STRAIN_WARNING,
                    (tagint) found[0], (tagint) found[1], found[2], found[3], ratio, found[4] * std::abs(ratio - 1.0));
 }
 
@@ -710,7 +710,7 @@ void FixWire::load_nodes()
   for (int k = 0; k < owned_nodes; k++) {
     const int i = atom_of_node[k];
     wire::Gear5State &s = nodes.state[k];
-    if (gear[i][kGearColumns - 1] != 0.0) s.unpack(gear[i]);
+    if (gear[i][GEAR_COLUMNS - 1] != 0.0) s.unpack(gear[i]);
     else s = wire::gear5_start(vec3(atom->x[i]), vec3(atom->v[i]), Vec3::Zero(), dt);
     s.r[0] = lib->step_start[k] = vec3(atom->x[i]);
     s.r[1] = vec3(atom->v[i]) * dt;
@@ -740,7 +740,7 @@ void FixWire::store_nodes()
     store(nodes.state[k].position(), atom->x[i]);
     store(nodes.state[k].velocity(lib->plan.dt_sp), atom->v[i]);
     nodes.state[k].pack(gear[i]);
-    gear[i][kGearColumns - 1] = 1.0;
+    gear[i][GEAR_COLUMNS - 1] = 1.0;
   }
   communicate(Comm::node_position, false);    // ghosts at the final positions, for output
 }

@@ -84,12 +84,12 @@ class FixWire : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
 
   // compute wire/contacts: recording of contact points from the next step on, and the
-  // points of the last step computed on this rank, kContactColumns numbers a row
+  // points of the last step computed on this rank, CONTACT_COLUMNS numbers a row
   // (doc/compute_wire_contacts.md).
-  static constexpr int kContactColumns = 16;
+  static constexpr int CONTACT_COLUMNS = 16;
   enum ContactColumn { ROW_NODE_1 = 0, ROW_OTHER = 2, ROW_KIND = 3, ROW_POINT = 4, ROW_NORMAL = 7, ROW_NORMAL_FORCE = 10,
                        ROW_TANGENTIAL_FORCE = 11 };
-  static constexpr double kRowWireGrain = 1.0;    // ROW_KIND of a wire-grain contact
+  static constexpr double ROW_WIRE_GRAIN = 1.0;    // ROW_KIND of a wire-grain contact
   void record_contacts();
   std::vector<double> contact_rows() const;
 
@@ -117,7 +117,7 @@ class FixWire : public Fix {
   std::unique_ptr<Lib> lib;
 
   // Gear state per atom: 18 scaled derivatives, then 1 if the state is initialised.
-  static constexpr int kGearColumns = 19;
+  static constexpr int GEAR_COLUMNS = 19;
   double **gear = nullptr;
   double state_dt = 0.0;        // the step the stored scaled derivatives refer to
 
@@ -165,10 +165,10 @@ class FixWire : public Fix {
   std::vector<double> grain_force_buffer;    // 6 per local atom
 
   std::array<double, 16> diagnostics{};
-  static constexpr int kBrokenDiagnostic = 13;    // elements broken so far (option strength)
+  static constexpr int BROKEN_DIAGNOSTIC = 13;    // elements broken so far (option strength)
   // The largest element tension at this step's start and over every step since the fix was
   // defined, on this rank (compute_vector takes the maximum over the ranks).
-  static constexpr int kTensionDiagnostic = 14, kRunTensionDiagnostic = 15;
+  static constexpr int TENSION_DIAGNOSTIC = 14, RUN_TENSION_DIAGNOSTIC = 15;
   double largest_tension = 0.0, largest_tension_in_run = 0.0;
 
   // option strength (fix_wire_break.cpp)

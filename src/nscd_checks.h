@@ -89,10 +89,10 @@ inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *wha
 // it) if it is damaged.
 template <class Read>
 auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *way_out)
-    -> decltype(read(bytes, nscd_restart::kUnknownSize))
+    -> decltype(read(bytes, nscd_restart::UNKNOWN_SIZE))
 {
   try {
-    return read(bytes, nscd_restart::kUnknownSize);
+    return read(bytes, nscd_restart::UNKNOWN_SIZE);
   } catch (nscd_restart::Damaged &e) {
     lmp->error->all(FLERR, "fix {} {}: its restart block cannot be used: {}. {}", fix->style, fix->id, e.what(),
                     way_out);

@@ -120,10 +120,10 @@ void PairNSCD::settings(int narg, char **arg)
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
       once(activation_as, arg[iarg], arg[iarg + 1]);
-      if (!(value >= 0.0 && value <= nscd_restart::kMaxActivationFraction))
+      if (!(value >= 0.0 && value <= nscd_restart::MAX_ACTIVATION_FRACTION))
         error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, {}] (a fraction of "
                    "the smallest grain's bounding radius); for fast grains lower the timestep",
-                   value, nscd_restart::kMaxActivationFraction);
+                   value, nscd_restart::MAX_ACTIVATION_FRACTION);
       activation_given = -1.0;
       activation_fraction = value;
     } else if (strcmp(arg[iarg], "reach") == 0) {
@@ -133,9 +133,9 @@ void PairNSCD::settings(int narg, char **arg)
       reach_given = value;
     } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
       once(reach_as, arg[iarg], arg[iarg + 1]);
-      if (!(value >= 0.0 && value <= nscd_restart::kMaxReachFraction))
+      if (!(value >= 0.0 && value <= nscd_restart::MAX_REACH_FRACTION))
         error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, {}] (a multiple of the "
-                   "smallest grain's bounding radius)", value, nscd_restart::kMaxReachFraction);
+                   "smallest grain's bounding radius)", value, nscd_restart::MAX_REACH_FRACTION);
       reach_given = -1.0;
       reach_fraction = value;
     }
