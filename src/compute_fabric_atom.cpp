@@ -32,7 +32,7 @@ enum Column { XX, YY, ZZ, XY, XZ, YZ, COUNT, NCOLUMNS };
 
 /* compute ID group fabric/atom [contacts active|all] [boundaries no|yes] */
 ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
-    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "fabric/atom")
+    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "fabric/atom"), active_only(true)
 {
   with_boundaries = false;    // the papers' fabric: grain-grain contacts
   with_wire = false;          // never wire-grain contacts: the keyword 'wire' is refused below

@@ -40,7 +40,8 @@ enum Column { FORCE, DIAMETER, TENSILE_STRESS, CRUSH_INDEX, NCOLUMNS };
 
 /* compute ID group nscd/crush/atom S0 [size D0 weibull M] [boundaries yes|no] [wire yes|no] */
 ComputeNSCDCrushAtom::ComputeNSCDCrushAtom(LAMMPS *lmp, int narg, char **arg) :
-    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/crush/atom", Combine::largest)
+    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/crush/atom", Combine::largest), strength(0.0),
+    reference_size(0.0), weibull(0.0)
 {
   parse(narg, arg);
 }

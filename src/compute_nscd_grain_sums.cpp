@@ -31,7 +31,8 @@ using namespace LAMMPS_NS;
 
 ComputeNSCDGrainSums::ComputeNSCDGrainSums(LAMMPS *lmp, int narg, char **arg, int columns, const char *style,
                                            Combine combine) :
-    Compute(lmp, narg, arg), style(style), combine(combine)
+    Compute(lmp, narg, arg), fix(nullptr), wire(nullptr), style(style), with_boundaries(true),
+    with_wire(true), wire_asked(false), combine(combine), nmax(0), absent(0), last_warning_step(-1)
 {
   peratom_flag = 1;
   size_peratom_cols = columns;

@@ -36,7 +36,7 @@ enum Column { XX, YY, ZZ, XY, XZ, YZ, NCOLUMNS };
 
 /* compute ID group nscd/stress/atom [boundaries yes|no] [wire yes|no] [volume grain|none] */
 ComputeNSCDStressAtom::ComputeNSCDStressAtom(LAMMPS *lmp, int narg, char **arg) :
-    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/stress/atom")
+    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/stress/atom"), per_volume(true)
 {
   const char *usage = "expected 'compute ID group nscd/stress/atom [boundaries yes|no] [wire yes|no] "
                       "[volume grain|none]'";

@@ -28,7 +28,8 @@
 
 using namespace LAMMPS_NS;
 
-ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), fix(nullptr), nmax(0)
 {
   if (narg > 3)
     error->all(FLERR, "Illegal compute wire/contacts command: unexpected '{}' (it takes no keyword: "

@@ -69,7 +69,9 @@ struct CreateGrains::Candidate {
   Placed grain;
 };
 
-CreateGrains::CreateGrains(LAMMPS *lmp) : Command(lmp), request(std::make_unique<Request>()) {}
+CreateGrains::CreateGrains(LAMMPS *lmp) :
+    Command(lmp), request(std::make_unique<Request>()), avec(nullptr)
+{}
 
 CreateGrains::~CreateGrains() = default;
 

@@ -107,7 +107,13 @@ struct FixNSCD::Solver {
                      [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V]
                      [interpenetration F] [skip_separating yes|no] [write_problem STEP FILE] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
+    Fix(lmp, narg, arg), solver(std::make_unique<Solver>()), exchange_every(1), warn_every(1000),
+    interpenetration_warning(0.2), smallest_rounding(0.0), warned_depth(0.0), dt(0.0), problem_step(-1),
+    pair(nullptr), avec(nullptr), pair_count(0), impulses_with_atoms(false), solved_since_filing(false),
+    records_sent(0.0), values_sent(0.0), records_migrated(0.0), values_migrated(0.0), records_received(0.0),
+    comm_counts(N_COMM_KINDS), exchanges_run(0), reductions_run(0), exchange_mode(Exchange::state),
+    unconverged_steps(0), last_warning_step(-1), last_speed_warning_step(-1), max_step_travel(0.0),
+    kinetic_translational(0.0), kinetic_rotational(0.0), warm_start_dt(0.0)
 {
   time_integrate = 1;
   restart_global = 1;

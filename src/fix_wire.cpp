@@ -79,7 +79,17 @@ enum Diagnostic {
                      [grain_friction TYPES MU_S MU_D] [radius R]
                      [damp C] [substeps N|auto|stable] [dt_sp DT] [safety S] [contacts_per_node N]
                      [skin S] [inertia S] */
-FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
+FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), lib(new Lib(this)), gear(nullptr), state_dt(0.0), mu_s_given(false),
+    mu_d_given(false), k_n_given(false), mu_ww_s(-1.0), mu_ww_d(-1.0), contacts_recorded(false),
+    wire_radius(0.0), node_damping(0.0), contact_skin(-1.0), requested_substeps(0), fastest_stable(false),
+    requested_dt_sp(0.0), safety(0.9), contacts_per_node(2.0), inertia_scale(1.0), bond(nullptr),
+    angle(nullptr), avec(nullptr), stable_dt_sp(0.0), owned_nodes(0), grains_anywhere(false), indexed_at(-1),
+    memories_with_atoms(false), longest_element(0.0), comm_mode(Comm::node_state), counting_comm(false),
+    comm_counts(N_COMM_KINDS), migrated(), diagnostics(), largest_tension(0.0), largest_tension_in_run(0.0),
+    strength(0.0), strength_spread(0.0), strength_seed(0.0), breaks_file(nullptr), breaks_given(false),
+    elements_broken(0), topology_changed(false), specials_stale(false), warned_fast_motion(false), timing(),
+    substeps_run(0), rebuilds_at_start(0)
 {
   time_integrate = restart_global = restart_peratom = create_attribute = 1;
   maxexchange_dynamic = 1;    // the friction memories travel with their nodes

@@ -52,7 +52,10 @@ struct PairNSCD::Found {
   nscd::ContactWorkspace workspace;
 };
 
-PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp), found(std::make_unique<Found>())
+PairNSCD::PairNSCD(LAMMPS *lmp) :
+    Pair(lmp), activation_given(-1.0), activation_fraction(0.1), activation(0.0), reach_given(-1.0),
+    reach_fraction(0.5), reach(0.0), mu(nullptr), restitution_coeff(nullptr), avec(nullptr),
+    found(std::make_unique<Found>())
 {
   single_enable = 0;
   restartinfo = 1;
