@@ -125,9 +125,8 @@ void AngleWire::read_restart(FILE *fp)
   MPI_Bcast(&stiffness[1], n, MPI_DOUBLE, 0, world);
   for (int i = 1; i <= n; i++) {
     if (!(stiffness[i] >= 0.0) || !std::isfinite(stiffness[i]))
-      error->all(FLERR, "angle_style wire: the restart file's k_rot = {} of angle type {} is damaged (a finite "
-                 "moment >= 0 was written); write the restart again, or give it with angle_coeff after a data "
-                 "file", stiffness[i], i);
+      error->all(FLERR, "angle_style wire: the restart file's k_rot = {} of angle type "
+                 "{} is damaged; write it again, or use angle_coeff", stiffness[i], i);
     setflag[i] = 1;
   }
 }

@@ -99,12 +99,12 @@ void AtomVecSpheropolyhedron::process_args(int narg, char **arg)
     try {
       *library = nscd::ShapeLibrary::deserialize(arg[1]);
     } catch (std::exception &e) {
-      error->all(FLERR, "atom_style spheropolyhedron: stored shape library is unreadable ({}); "
-                 "the restart file is damaged or from another version", e.what());
+      error->all(FLERR, "atom_style spheropolyhedron: the stored shape library "
+                 "is unreadable ({}): a damaged or foreign restart file", e.what());
     }
   } else if (narg != 0) {
-    error->all(FLERR, "Illegal atom_style spheropolyhedron command: it takes no arguments "
-               "(load shapes with 'shapes read FILE' or 'shapes random ...')");
+    error->all(FLERR, "Illegal atom_style spheropolyhedron command: it takes "
+               "no arguments; load shapes with 'shapes read' or 'shapes random'");
   }
   setup_fields();
 }
@@ -164,9 +164,8 @@ void AtomVecSpheropolyhedron::unpack_restart_init(int i)
 void AtomVecSpheropolyhedron::check_shape_id(int i) const
 {
   if (shape[i] < 0 || shape[i] > library->size())
-    error->one(FLERR, "Atom ID {} has shape id {}, but the shape library holds {} shape(s); "
-               "load the shapes ('shapes read FILE') before read_data, or use 0 for a point",
-               atom->tag[i], shape[i], library->size());
+    error->one(FLERR, "Atom ID {} has shape id {}, but the library holds {} shape(s); use 'shapes "
+               "read' before read_data, or 0 for a point", atom->tag[i], shape[i], library->size());
 }
 
 void AtomVecSpheropolyhedron::set_shape(int i, int shape_id, double mass)

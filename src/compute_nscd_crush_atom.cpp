@@ -68,8 +68,8 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
     }
   }
   if ((reference_size > 0.0) != (weibull > 0.0))
-    error->all(FLERR, "{}: the size effect needs both 'size D0' (the size whose strength is S0) and "
-               "'weibull M' (the Weibull modulus); give both, or neither for one strength for all sizes", where);
+    error->all(FLERR, "{}: the size effect needs both 'size D0' and 'weibull M'; "
+               "give both, or neither (doc/compute_nscd_crush_atom.md, Errors)", where);
 }
 
 void ComputeNSCDCrushAtom::compute_peratom()

@@ -54,9 +54,8 @@ void ComputeWireContacts::init()
   int dim = 0;
   const auto *k_n = static_cast<const double *>(fix->extract("k_n", dim));
   if (!k_n || !(*k_n > 0.0))
-    error->all(FLERR, "compute wire/contacts {}: fix wire {} has no contacts (k_n {}), so there is nothing to "
-               "report; give fix wire a contact stiffness 'k_n K' (and 'radius R'), or drop the compute", id,
-               fix->id, k_n ? *k_n : 0.0);
+    error->all(FLERR, "compute wire/contacts {}: fix wire {} has no contacts (k_n {}); give "
+               "it 'k_n K' and 'radius R', or drop the compute", id, fix->id, k_n ? *k_n : 0.0);
   fix->record_contacts();
 }
 

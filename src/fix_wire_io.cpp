@@ -204,27 +204,25 @@ void FixWire::unpack_restart(int nlocal, int nth)
     const bool mine = k == nth;
     if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) ||
         (mine && count != gear_only && count < least_with_memories))
-      error->one(FLERR, "fix wire {}: the restart file's per-atom values of atom ID {} are damaged (a count of {} "
-                 "where {} fit); define fix wire with another ID to start without them", id, atom->tag[nlocal],
-                 count, mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m) :
-                 fmt::format("{}", width - m));
+      error->one(FLERR, "fix wire {}: restart per-atom values of atom ID {} are damaged (a count of {} where {} fit); see doc/fix_wire.md, "
+                 "Errors",
+                 id, atom->tag[nlocal], count, mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m) : fmt::format("{}", width - m));
     if (!mine) m += (int) count;
   }
   const double *state = extra + m + 1;
   const double started = state[GEAR_COLUMNS - 1];
   for (int c = 0; c < GEAR_COLUMNS; c++)
     if (!std::isfinite(state[c]) || (c == GEAR_COLUMNS - 1 && started != 0.0 && started != 1.0))
-      error->one(FLERR, "fix wire {}: the restart file's Gear state of atom ID {} holds {} (value {} of {}): "
-                 "it is damaged; define fix wire with another ID to start without it", id, atom->tag[nlocal],
-                 state[c], c + 1, GEAR_COLUMNS);
+      error->one(FLERR, "fix wire {}: the restart file's Gear state of atom ID {} holds {} (value {} of "
+                 "{}); see doc/fix_wire.md, Errors", id, atom->tag[nlocal], state[c], c + 1, GEAR_COLUMNS);
   std::copy(state, state + GEAR_COLUMNS, gear[nlocal]);
   if (extra[m] == gear_only) return;    // wire format 3 or older: restart() kept the atom's memories
   try {
     const auto values = (std::size_t) extra[m] - gear_only;
     lib->atom_memories.set(nlocal, nscd_restart::read_atom_memories(state + GEAR_COLUMNS, values, atom->tag[nlocal]));
   } catch (nscd_restart::Damaged &e) {
-    error->one(FLERR, "fix wire {}: the friction memories in the restart file cannot be used: {}. To start without "
-               "them, define fix wire with another ID", id, e.what());
+    error->one(FLERR, "fix wire {}: the friction memories in the restart file "
+               "cannot be used: {}; see doc/fix_wire.md, Errors", id, e.what());
   }
   maxexchange = std::max(maxexchange, GEAR_COLUMNS + lib->atom_memories.values(nlocal));
   memories_with_atoms = true;
