@@ -277,8 +277,8 @@ void FixNSCDPlate::Plate::stop_if_sinking(const nscd::Contact *first, int count)
   double worst = 0.0;
   MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE, MPI_MAX, fix.world);
   if (!(worst > 0.2)) return;
-  fix.error->all(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding "
-                 "radius deep; lower the load, rate or timestep", fix.id, fix.update->ntimestep, worst);
+  fix.error->all(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding radius deep; "
+                 "lower the load {:.6g} or rate {:.6g}", fix.id, fix.update->ntimestep, worst, load_start, load_rate);
 }
 
 double FixNSCDPlate::compute_vector(int n)

@@ -265,7 +265,7 @@ TEST_F(BadInputTest, OverlapSpeedBeyondTheLookAheadIsRefused)
   resting_cubes("fix solver all nscd overlap_speed 1e6");
   const std::string message = error_of("run 1");
   EXPECT_TRUE(has(message, "fix nscd: overlap_speed 1000000 separates grains by up to 1000 per step")) << message;
-  EXPECT_TRUE(has(message, "Use at most 519.6")) << message;    // (activation 0.0866 + reach 0.433) / 0.001
+  EXPECT_TRUE(has(message, "use at most 519.6")) << message;    // (activation 0.0866 + reach 0.433) / 0.001
   run("unfix solver");
   run("fix solver all nscd overlap_speed 0.05");
   EXPECT_EQ(error_of("run 1"), "");
