@@ -104,8 +104,8 @@ void AngleWire::coeff(int narg, char **arg)
     error->all(FLERR, "angle_coeff wire: k_rot = {} must be a finite moment >= 0 (k_rot = EI / l)", k);
   const double theta0 = narg == 3 ? nscd_args::number(lmp, "angle_coeff wire", "theta0", arg[2]) : 180.0;
   if (!(theta0 > 0.0 && theta0 <= 180.0))
-    error->all(FLERR, "angle_coeff wire: theta0 = {} must be an angle in degrees in (0, 180] (180: straight at "
-               "rest; a loop of radius R with elements l: 180 - 2 asin(l / 2R) in degrees)", theta0);
+    error->all(FLERR, "angle_coeff wire: theta0 = {} must be in (0, 180] degrees (180: straight); "
+               "see doc/angle_style_wire.md, Errors", theta0);
   for (int i = ilo; i <= ihi; i++) {
     stiffness[i] = k;
     rest[i] = (180.0 - theta0) * MathConst::MY_PI / 180.0;
@@ -151,12 +151,11 @@ void AngleWire::read_restart(FILE *fp)
   MPI_Bcast(&rest[1], n, MPI_DOUBLE, 0, world);
   for (int i = 1; i <= n; i++) {
     if (!(stiffness[i] >= 0.0) || !std::isfinite(stiffness[i]))
-      error->all(FLERR, "angle_style wire: the restart file's k_rot = {} of angle type {} is damaged (a finite "
-                 "moment >= 0 was written); write the restart again, or give it with angle_coeff after a data "
-                 "file", stiffness[i], i);
+      error->all(FLERR, "angle_style wire: the restart file's k_rot = {} of angle type "
+                 "{} is damaged; write it again, or use angle_coeff", stiffness[i], i);
     if (!(rest[i] >= 0.0 && rest[i] < MathConst::MY_PI))
-      error->all(FLERR, "angle_style wire: the restart file's rest turn {} of angle type {} is damaged (an angle "
-                 "in [0, pi) was written); write the restart again, or give theta0 with angle_coeff", rest[i], i);
+      error->all(FLERR, "angle_style wire: the restart file's rest turn {} of angle type {} "
+                 "is damaged; write it again, or use angle_coeff", rest[i], i);
     setflag[i] = 1;
   }
 }

@@ -34,8 +34,8 @@ using namespace LAMMPS_NS;
 using namespace nscd_arrays;
 
 namespace {
-const char *const kStyleName = "spheropolyhedron";
-const char *const kLibraryArg = "library";    // followed by the serialised shape library
+const char *const STYLE_NAME = "spheropolyhedron";
+const char *const LIBRARY_ARG = "library";    // followed by the serialised shape library
 }    // namespace
 
 AtomVecSpheropolyhedron::AtomVecSpheropolyhedron(LAMMPS *lmp) :
@@ -95,16 +95,16 @@ void AtomVecSpheropolyhedron::point_peratom(const char *name, void *address, int
    restart files (and used by `replicate`). Users load shapes with the `shapes` command. */
 void AtomVecSpheropolyhedron::process_args(int narg, char **arg)
 {
-  if (narg == 2 && strcmp(arg[0], kLibraryArg) == 0) {
+  if (narg == 2 && strcmp(arg[0], LIBRARY_ARG) == 0) {
     try {
       *library = nscd::ShapeLibrary::deserialize(arg[1]);
     } catch (std::exception &e) {
-      error->all(FLERR, "atom_style spheropolyhedron: stored shape library is unreadable ({}); "
-                 "the restart file is damaged or from another version", e.what());
+      error->all(FLERR, "atom_style spheropolyhedron: the stored shape library "
+                 "is unreadable ({}): a damaged or foreign restart file", e.what());
     }
   } else if (narg != 0) {
-    error->all(FLERR, "Illegal atom_style spheropolyhedron command: it takes no arguments "
-               "(load shapes with 'shapes read FILE' or 'shapes random ...')");
+    error->all(FLERR, "Illegal atom_style spheropolyhedron command: it takes "
+               "no arguments; load shapes with 'shapes read' or 'shapes random'");
   }
   setup_fields();
 }
@@ -164,9 +164,8 @@ void AtomVecSpheropolyhedron::unpack_restart_init(int i)
 void AtomVecSpheropolyhedron::check_shape_id(int i) const
 {
   if (shape[i] < 0 || shape[i] > library->size())
-    error->one(FLERR, "Atom ID {} has shape id {}, but the shape library holds {} shape(s); "
-               "load the shapes ('shapes read FILE') before read_data, or use 0 for a point",
-               atom->tag[i], shape[i], library->size());
+    error->one(FLERR, "Atom ID {} has shape id {}, but the library holds {} shape(s); use 'shapes "
+               "read' before read_data, or 0 for a point", atom->tag[i], shape[i], library->size());
 }
 
 void AtomVecSpheropolyhedron::set_shape(int i, int shape_id, double mass)
@@ -209,7 +208,7 @@ void AtomVecSpheropolyhedron::record_library_in_style_args()
   AtomVec *top = atom->avec;
   std::vector<std::string> args;
   if (top == this) {
-    args = {kLibraryArg, text};
+    args = {LIBRARY_ARG, text};
   } else {
     auto hybrid = dynamic_cast<AtomVecHybrid *>(top);
     if (!hybrid) error->all(FLERR, "atom_style spheropolyhedron: unexpected owning atom style");
@@ -220,9 +219,9 @@ void AtomVecSpheropolyhedron::record_library_in_style_args()
     };
     for (int a = 0; a < top->nargcopy; a++) {
       args.emplace_back(top->argcopy[a]);
-      if (strcmp(top->argcopy[a], kStyleName) != 0) continue;
+      if (strcmp(top->argcopy[a], STYLE_NAME) != 0) continue;
       while (a + 1 < top->nargcopy && !is_keyword(top->argcopy[a + 1])) a++;
-      args.emplace_back(kLibraryArg);
+      args.emplace_back(LIBRARY_ARG);
       args.push_back(text);
     }
   }
@@ -237,7 +236,7 @@ void AtomVecSpheropolyhedron::record_library_in_style_args()
 
 AtomVecSpheropolyhedron *AtomVecSpheropolyhedron::find(LAMMPS *lmp, const char *caller)
 {
-  AtomVec *avec = lmp->atom->atom_style ? lmp->atom->style_match(kStyleName) : nullptr;
+  AtomVec *avec = lmp->atom->atom_style ? lmp->atom->style_match(STYLE_NAME) : nullptr;
   if (!avec)
     lmp->error->all(FLERR, "{} needs atom_style spheropolyhedron (alone or inside atom_style "
                     "hybrid); define it before this command", caller);
@@ -265,13 +264,13 @@ nscd::Pose AtomVecSpheropolyhedron::pose(int i) const
 /* Per-atom values for compute property/atom and dump custom: shape, qw qx qy qz,
    inertia1 inertia2 inertia3 (names distinct from the ellipsoid/body ones). */
 namespace {
-const char *const kProperties[] = {"shape", "qw", "qx", "qy", "qz", "inertia1", "inertia2", "inertia3"};
+const char *const PROPERTIES[] = {"shape", "qw", "qx", "qy", "qz", "inertia1", "inertia2", "inertia3"};
 }
 
 int AtomVecSpheropolyhedron::property_atom(const std::string &name)
 {
   for (int k = 0; k < 8; k++)
-    if (name == kProperties[k]) return k;
+    if (name == PROPERTIES[k]) return k;
   return -1;
 }
 

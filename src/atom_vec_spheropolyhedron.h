@@ -80,8 +80,9 @@ class AtomVecSpheropolyhedron : public AtomVec {
   // ~AtomVec of an enclosing atom_style hybrid frees the arrays through them after this
   // sub-style has been deleted.
   struct OwnFields {
-    int *shape = nullptr;
-    double **inertia = nullptr;
+    OwnFields() : shape(nullptr), inertia(nullptr) {}
+    int *shape;
+    double **inertia;
   };
   OwnFields &own;
   int *&shape;           // shape id, 1..N; 0 = point mass (no shape)

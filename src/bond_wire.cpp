@@ -159,9 +159,9 @@ void BondWire::read_restart(FILE *fp)
     const double *row = &rows[3 * (i - 1)];
     const std::string problem = problem_of(row[0], row[1]);
     if (!problem.empty() || (row[2] != 0.0 && row[2] != 1.0))
-      error->all(FLERR, "bond_style wire: the restart file's coefficients of bond type {} are damaged ({}); "
-                 "write the restart again, or give them with bond_coeff after a data file", i,
-                 problem.empty() ? fmt::format("string flag {}", row[2]) : problem);
+      error->all(FLERR, "bond_style wire: the restart file's coefficients of bond type {} are damaged ({}); write "
+                 "it again, or use bond_coeff",
+                 i, problem.empty() ? fmt::format("string flag {}", row[2]) : problem);
     k_elo[i] = rows[3 * (i - 1)];
     r0[i] = rows[3 * (i - 1) + 1];
     is_string[i] = rows[3 * (i - 1) + 2] != 0.0;

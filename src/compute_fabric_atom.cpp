@@ -32,7 +32,7 @@ enum Column { XX, YY, ZZ, XY, XZ, YZ, COUNT, NCOLUMNS };
 
 /* compute ID group fabric/atom [contacts active|all] [boundaries no|yes] */
 ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
-    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "fabric/atom")
+    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "fabric/atom"), active_only(true)
 {
   with_boundaries = false;    // the papers' fabric: grain-grain contacts
   with_wire = false;          // never wire-grain contacts: the keyword 'wire' is refused below
@@ -47,9 +47,8 @@ ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
     } else if (key == "boundaries" && (value == "yes" || value == "no")) {
       with_boundaries = value == "yes";
     } else if (key == "wire") {
-      error->all(FLERR, "compute fabric/atom: 'wire {}': the fabric is of grain-grain contacts (with "
-                 "'boundaries yes' also walls and the plate), never wire-grain ones; drop the keyword "
-                 "(compute wire/contacts gives the wire's contacts)", value);
+      error->all(FLERR, "compute fabric/atom: 'wire {}': the fabric has no wire-grain "
+                 "contacts; drop the keyword (see compute wire/contacts)", value);
     } else {
       error->all(FLERR, "compute fabric/atom: unknown keyword or value '{} {}'; {}", key, value, usage);
     }

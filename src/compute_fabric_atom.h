@@ -35,7 +35,7 @@ class ComputeFabricAtom : public ComputeNSCDGrainSums {
   void compute_peratom() override;
 
  private:
-  bool active_only = true;         // contacts active (default) | all
+  bool active_only;                // contacts active (default) | all
 
   void normalise_owned();
 };

@@ -39,7 +39,9 @@ enum Output { HEIGHT, RETAINED_FRACTION, RETAINED, GRAINS, TOP, NOUTPUTS };
 }
 
 /* compute ID group nscd/column X Y R [floor Z] [percentile P] */
-ComputeNSCDColumn::ComputeNSCDColumn(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeNSCDColumn::ComputeNSCDColumn(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), axis_x(0.0), axis_y(0.0), radius(0.0), floor_z(-1e300), percentile(100.0),
+    avec(nullptr)
 {
   if (narg < 6)
     error->all(FLERR, "Illegal compute nscd/column command: expected 'compute ID group nscd/column "

@@ -39,10 +39,10 @@ class ComputeNSCDColumn : public Compute {
   void compute_vector() override;
 
  private:
-  double axis_x = 0.0, axis_y = 0.0, radius = 0.0;    // the column: within radius of the axis
-  double floor_z = -1e300;                             // retained: centre above this
-  double percentile = 100.0;                           // height: this percentile of the grains' tops
-  class AtomVecSpheropolyhedron *avec = nullptr;
+  double axis_x, axis_y, radius;                      // the column: within radius of the axis
+  double floor_z;                                      // retained: centre above this
+  double percentile;                                   // height: this percentile of the grains' tops
+  class AtomVecSpheropolyhedron *avec;
 
   double height_of(const std::vector<double> &my_tops);
 };

@@ -47,7 +47,8 @@ enum PairColumn {
 
 /* compute ID group nscd/contacts [active] [pairs] : with `active`, only contacts that carry a
    force; with `pairs`, one row per contacting pair instead of per point. */
-ComputeNSCDContacts::ComputeNSCDContacts(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeNSCDContacts::ComputeNSCDContacts(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), fix(nullptr), nmax(0), active_only(false), per_pair(false)
 {
   for (int iarg = 3; iarg < narg; iarg++) {
     if (strcmp(arg[iarg], "active") == 0) active_only = true;

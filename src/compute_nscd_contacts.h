@@ -40,10 +40,10 @@ class ComputeNSCDContacts : public Compute {
   double memory_usage() override;
 
  private:
-  class FixNSCD *fix = nullptr;
-  int nmax = 0;
-  bool active_only = false;
-  bool per_pair = false;
+  class FixNSCD *fix;
+  int nmax;
+  bool active_only;
+  bool per_pair;
   void grow(int n);
   bool in_group(std::int64_t tag) const;
   void fill_point_rows();

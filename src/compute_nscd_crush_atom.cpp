@@ -40,7 +40,8 @@ enum Column { FORCE, DIAMETER, TENSILE_STRESS, CRUSH_INDEX, NCOLUMNS };
 
 /* compute ID group nscd/crush/atom S0 [size D0 weibull M] [boundaries yes|no] [wire yes|no] */
 ComputeNSCDCrushAtom::ComputeNSCDCrushAtom(LAMMPS *lmp, int narg, char **arg) :
-    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/crush/atom", Combine::largest)
+    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/crush/atom", Combine::largest), strength(0.0),
+    reference_size(0.0), weibull(0.0)
 {
   parse(narg, arg);
 }
@@ -67,8 +68,8 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
     }
   }
   if ((reference_size > 0.0) != (weibull > 0.0))
-    error->all(FLERR, "{}: the size effect needs both 'size D0' (the size whose strength is S0) and "
-               "'weibull M' (the Weibull modulus); give both, or neither for one strength for all sizes", where);
+    error->all(FLERR, "{}: the size effect needs both 'size D0' and 'weibull M'; "
+               "give both, or neither (doc/compute_nscd_crush_atom.md, Errors)", where);
 }
 
 void ComputeNSCDCrushAtom::compute_peratom()
@@ -104,10 +105,10 @@ void ComputeNSCDCrushAtom::add_grain_contacts()
 void ComputeNSCDCrushAtom::add_wire_contacts()
 {
   const std::vector<double> rows = wire->contact_rows();
-  const size_t cols = FixWire::kContactColumns;
+  const size_t cols = FixWire::CONTACT_COLUMNS;
   std::map<std::pair<double, double>, double> per_element;
   for (size_t r = 0; r + cols <= rows.size(); r += cols)
-    if (rows[r + FixWire::ROW_KIND] == FixWire::kRowWireGrain)
+    if (rows[r + FixWire::ROW_KIND] == FixWire::ROW_WIRE_GRAIN)
       per_element[{rows[r + FixWire::ROW_NODE_1], rows[r + FixWire::ROW_OTHER]}] += rows[r + FixWire::ROW_NORMAL_FORCE];
   for (const auto &[key, force] : per_element) add_largest(key.second, force);
 }

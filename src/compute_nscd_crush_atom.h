@@ -35,9 +35,9 @@ class ComputeNSCDCrushAtom : public ComputeNSCDGrainSums {
   void compute_peratom() override;
 
  private:
-  double strength = 0.0;          // sigma_0: the strength of a grain of size d_0
-  double reference_size = 0.0;    // d_0 (size keyword)
-  double weibull = 0.0;           // Weibull modulus m (0: no size effect)
+  double strength;                // sigma_0: the strength of a grain of size d_0
+  double reference_size;          // d_0 (size keyword)
+  double weibull;                 // Weibull modulus m (0: no size effect)
 
   void parse(int narg, char **arg);
   void add_largest(double tag, double force);

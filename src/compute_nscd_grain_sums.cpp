@@ -31,7 +31,8 @@ using namespace LAMMPS_NS;
 
 ComputeNSCDGrainSums::ComputeNSCDGrainSums(LAMMPS *lmp, int narg, char **arg, int columns, const char *style,
                                            Combine combine) :
-    Compute(lmp, narg, arg), style(style), combine(combine)
+    Compute(lmp, narg, arg), fix(nullptr), wire(nullptr), style(style), with_boundaries(true),
+    with_wire(true), wire_asked(false), combine(combine), nmax(0), absent(0), last_warning_step(-1)
 {
   peratom_flag = 1;
   size_peratom_cols = columns;
@@ -113,9 +114,8 @@ void ComputeNSCDGrainSums::finish_sums()
   MPI_Allreduce(&absent, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all == 0 || comm->me != 0 || last_warning_step == update->ntimestep) return;
   last_warning_step = update->ntimestep;
-  error->warning(FLERR, "compute {} {}: {} contact ends of the last step name grains this rank no "
-                 "longer holds (atoms were redistributed since, at the start of a run); their "
-                 "contacts are left out at step {}", style, id, all, update->ntimestep);
+  error->warning(FLERR, "compute {} {}: {} contacts left out at step {}: their grains left this "
+                 "rank (doc/compute_fabric_atom.md, Errors)", style, id, all, update->ntimestep);
 }
 
 int ComputeNSCDGrainSums::pack_reverse_comm(int n, int first, double *buf)

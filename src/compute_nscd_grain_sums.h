@@ -41,12 +41,12 @@ class ComputeNSCDGrainSums : public Compute {
   double memory_usage() override;
 
  protected:
-  class FixNSCD *fix = nullptr;
-  class FixWire *wire = nullptr;     // set by init: the fix whose wire-grain contacts count
+  class FixNSCD *fix;
+  class FixWire *wire;               // set by init: the fix whose wire-grain contacts count
   const char *style;
-  bool with_boundaries = true;       // boundaries yes|no: wall and plate contacts count
-  bool with_wire = true;             // wire yes|no: wire-grain contacts count (if there is a fix wire)
-  bool wire_asked = false;           // 'wire yes' given: a missing fix wire is an error
+  bool with_boundaries;              // boundaries yes|no: wall and plate contacts count
+  bool with_wire;                    // wire yes|no: wire-grain contacts count (if there is a fix wire)
+  bool wire_asked;                   // 'wire yes' given: a missing fix wire is an error
   const Combine combine;
 
   // The keywords 'boundaries yes|no' and 'wire yes|no'; false if `key value` is neither.
@@ -61,9 +61,9 @@ class ComputeNSCDGrainSums : public Compute {
   void finish_sums();
 
  private:
-  int nmax = 0;
-  bigint absent = 0;
-  bigint last_warning_step = -1;
+  int nmax;
+  bigint absent;
+  bigint last_warning_step;
 
   void combine_into(double *into, const double *row) const;
   void find_wire();

@@ -34,7 +34,7 @@ enum Column { DEPTH, PARTNER, NCOLUMNS };
 
 /* compute ID group nscd/overlap/atom */
 ComputeNSCDOverlapAtom::ComputeNSCDOverlapAtom(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg)
+    Compute(lmp, narg, arg), pair(nullptr), nmax(0)
 {
   if (narg != 3)
     error->all(FLERR, "compute nscd/overlap/atom takes no keywords, got '{}'; expected "

@@ -43,8 +43,8 @@ class ComputeNSCDOverlapAtom : public Compute {
   double memory_usage() override;
 
  private:
-  class PairNSCD *pair = nullptr;
-  int nmax = 0;
+  class PairNSCD *pair;
+  int nmax;
 
   int index_of(std::int64_t tag) const;
   void keep_deeper(int i, double depth, double partner);

@@ -36,7 +36,7 @@ enum Column { XX, YY, ZZ, XY, XZ, YZ, NCOLUMNS };
 
 /* compute ID group nscd/stress/atom [boundaries yes|no] [wire yes|no] [volume grain|none] */
 ComputeNSCDStressAtom::ComputeNSCDStressAtom(LAMMPS *lmp, int narg, char **arg) :
-    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/stress/atom")
+    ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/stress/atom"), per_volume(true)
 {
   const char *usage = "expected 'compute ID group nscd/stress/atom [boundaries yes|no] [wire yes|no] "
                       "[volume grain|none]'";
@@ -100,10 +100,10 @@ void ComputeNSCDStressAtom::add_grain_contacts()
 void ComputeNSCDStressAtom::add_wire_contacts()
 {
   const std::vector<double> rows = wire->contact_rows();
-  const size_t cols = FixWire::kContactColumns;
+  const size_t cols = FixWire::CONTACT_COLUMNS;
   for (size_t r = 0; r + cols <= rows.size(); r += cols) {
     const double *row = &rows[r];
-    if (row[FixWire::ROW_KIND] != FixWire::kRowWireGrain) continue;
+    if (row[FixWire::ROW_KIND] != FixWire::ROW_WIRE_GRAIN) continue;
     double on_grain[3];
     for (int k = 0; k < 3; k++) on_grain[k] = -(row[FixWire::ROW_NORMAL_FORCE] * row[FixWire::ROW_NORMAL + k] +
                      row[FixWire::ROW_TANGENTIAL_FORCE + k]);

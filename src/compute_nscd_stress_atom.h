@@ -36,7 +36,7 @@ class ComputeNSCDStressAtom : public ComputeNSCDGrainSums {
   void compute_peratom() override;
 
  private:
-  bool per_volume = true;         // volume grain (default): a stress | none: stress x volume
+  bool per_volume;                // volume grain (default): a stress | none: stress x volume
 
   void add_force(double tag, const double *force, const double *point);
   void add_grain_contacts();

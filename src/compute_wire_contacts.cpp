@@ -28,14 +28,15 @@
 
 using namespace LAMMPS_NS;
 
-ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeWireContacts::ComputeWireContacts(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), fix(nullptr), nmax(0)
 {
   if (narg > 3)
     error->all(FLERR, "Illegal compute wire/contacts command: unexpected '{}' (it takes no keyword: "
                "'compute ID group wire/contacts')", arg[3]);
   local_flag = 1;
   size_local_rows = 0;
-  size_local_cols = FixWire::kContactColumns;
+  size_local_cols = FixWire::CONTACT_COLUMNS;
 }
 
 ComputeWireContacts::~ComputeWireContacts()
@@ -53,9 +54,8 @@ void ComputeWireContacts::init()
   int dim = 0;
   const auto *k_n = static_cast<const double *>(fix->extract("k_n", dim));
   if (!k_n || !(*k_n > 0.0))
-    error->all(FLERR, "compute wire/contacts {}: fix wire {} has no contacts (k_n {}), so there is nothing to "
-               "report; give fix wire a contact stiffness 'k_n K' (and 'radius R'), or drop the compute", id,
-               fix->id, k_n ? *k_n : 0.0);
+    error->all(FLERR, "compute wire/contacts {}: fix wire {} has no contacts (k_n {}); give "
+               "it 'k_n K' and 'radius R', or drop the compute", id, fix->id, k_n ? *k_n : 0.0);
   fix->record_contacts();
 }
 
@@ -63,7 +63,7 @@ void ComputeWireContacts::compute_local()
 {
   invoked_local = update->ntimestep;
   const std::vector<double> rows = fix ? fix->contact_rows() : std::vector<double>();
-  const int cols = FixWire::kContactColumns, all = (int) (rows.size() / cols);
+  const int cols = FixWire::CONTACT_COLUMNS, all = (int) (rows.size() / cols);
   if (all > nmax) {
     nmax = all;
     memory->destroy(array_local);

@@ -38,8 +38,8 @@ class ComputeWireContacts : public Compute {
   double memory_usage() override;
 
  private:
-  class FixWire *fix = nullptr;
-  int nmax = 0;
+  class FixWire *fix;
+  int nmax;
 };
 
 }    // namespace LAMMPS_NS

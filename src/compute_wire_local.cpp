@@ -33,7 +33,8 @@ enum Column { ID1, ID2, STRAIN, TENSION, ENERGY, NCOLUMNS };
 }
 
 /* compute ID group wire/local   (columns: id1 id2 strain tension energy) */
-ComputeWireLocal::ComputeWireLocal(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
+ComputeWireLocal::ComputeWireLocal(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), rows_allocated(0), bond(nullptr)
 {
   if (narg != 3)
     error->all(FLERR, "compute wire/local takes no arguments (got {}); its columns are id1 id2 "

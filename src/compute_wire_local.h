@@ -38,8 +38,8 @@ class ComputeWireLocal : public Compute {
   double memory_usage() override;
 
  private:
-  int rows_allocated = 0;
-  class BondWire *bond = nullptr;
+  int rows_allocated;
+  class BondWire *bond;
 };
 
 }    // namespace LAMMPS_NS

@@ -69,7 +69,9 @@ struct CreateGrains::Candidate {
   Placed grain;
 };
 
-CreateGrains::CreateGrains(LAMMPS *lmp) : Command(lmp), request(std::make_unique<Request>()) {}
+CreateGrains::CreateGrains(LAMMPS *lmp) :
+    Command(lmp), request(std::make_unique<Request>()), avec(nullptr)
+{}
 
 CreateGrains::~CreateGrains() = default;
 
@@ -117,7 +119,7 @@ void CreateGrains::command(int narg, char **arg)
                    where, hit_old, hit_new, r.gap);
   }
   if (r.layout == Request::Layout::random && (bigint) accepted.size() < r.count)
-    error->warning(FLERR, "create_grains: placed {} of {} grains in {} tries; the region is too full: give more "
+    error->warning(FLERR, "create_grains: placed {} of {} grains in {} tries (region too full); give more "
                    "tries, a larger region or fewer grains", accepted.size(), r.count, r.count * r.tries);
 }
 
@@ -192,9 +194,9 @@ void CreateGrains::parse(int narg, char **arg)
   if (!have_layout) error->all(FLERR, "create_grains: give the layout ('lattice SPACING' or 'random N TRIES'); {}", usage);
   for (int d = 0; d < 3; d++)
     if (r.lo[d] < domain->boxlo[d] || r.hi[d] > domain->boxhi[d])
-      error->all(FLERR, "create_grains: region '{}' reaches outside the box in {} ({:.6g}..{:.6g}, the box "
-                 "{:.6g}..{:.6g}); give a region inside the box", arg[1], "xyz"[d], r.lo[d], r.hi[d],
-                 domain->boxlo[d], domain->boxhi[d]);
+      error->all(FLERR, "create_grains: region '{}' reaches outside the box in {} ({:.6g}..{:.6g}, box {:.6g}..{:.6g}); "
+                 "use a region inside it",
+                 arg[1], "xyz"[d], r.lo[d], r.hi[d], domain->boxlo[d], domain->boxhi[d]);
 }
 
 /* The grains already there that a new grain in the region could touch, from every rank (a

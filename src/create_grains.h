@@ -45,7 +45,7 @@ class CreateGrains : public Command {
   struct Placed;       // a grain for the overlap test: shape id and pose
   struct Candidate;    // a site with its drawn shape and orientation
   std::unique_ptr<Request> request;
-  class AtomVecSpheropolyhedron *avec = nullptr;
+  class AtomVecSpheropolyhedron *avec;
 
   void parse(int narg, char **arg);
   std::vector<Placed> gather_grains_near_region() const;

@@ -55,8 +55,8 @@ using namespace LAMMPS_NS;
 using namespace nscd_arrays;
 
 namespace {
-constexpr double kDegree = M_PI / 180.0;
-constexpr double kLengthTolerance = 1e-6;    // elements this close to the rest length are unstrained
+constexpr double DEGREE = M_PI / 180.0;
+constexpr double LENGTH_TOLERANCE = 1e-6;    // elements this close to the rest length are unstrained
 }    // namespace
 
 struct CreateWire::Request {
@@ -157,7 +157,7 @@ void CreateWire::command(int narg, char **arg)
     };
     const double step = std::remainder(angle_of(r.layout.nodes[1]) - angle_of(r.layout.nodes[0]), 2.0 * M_PI);
     const double open = 2.0 * M_PI * r.loop.turns - (double) (n - 1) * std::abs(step);
-    end = fmt::format("open, ends {:.4g} degrees apart", open / kDegree);
+    end = fmt::format("open, ends {:.4g} degrees apart", open / DEGREE);
   } else if (!r.layout.closed) {
     end = fmt::format("open, last node {:.4g} before the path's end",
                       (r.layout.nodes.back() - r.polyline.points.back()).norm());
@@ -254,11 +254,11 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 2;
     } else if (key == "gap") {
       need(1);
-      r.loop.gap = number(iarg + 1) * kDegree;
+      r.loop.gap = number(iarg + 1) * DEGREE;
       iarg += 2;
     } else if (key == "start") {
       need(1);
-      r.loop.start = number(iarg + 1) * kDegree;
+      r.loop.start = number(iarg + 1) * DEGREE;
       iarg += 2;
     } else if (key == "axis") {
       need(3);
@@ -302,14 +302,14 @@ void CreateWire::parse(int narg, char **arg)
       r.strained = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
       iarg += 2;
     } else {
-      error->all(FLERR, "create_wire: unknown keyword '{}' (expected bond, angle, mass, turns, pitch, "
-                 "gap, start, axis, nodes, mol, radius, overlap, strained, from)", key);
+      error->all(FLERR, "create_wire: unknown keyword '{}'; the "
+                 "keywords are listed in doc/create_wire.md, Syntax", key);
     }
   }
   if (r.continues()) {
     if (r.nodes > 0)
-      error->all(FLERR, "create_wire: 'nodes' cannot be combined with 'from' (the elements of a continued wire "
-                 "have the rest length of its bond type); drop 'nodes'");
+      error->all(FLERR, "create_wire: 'nodes' cannot be combined with "
+                 "'from'; drop 'nodes' (doc/create_wire.md, Errors)");
     return;    // the types, molecule and mass default to the wire's (find_end)
   }
   if (r.bond_type == 0) error->all(FLERR, "create_wire: give the bond type of the elements ('bond BTYPE')");
@@ -392,9 +392,9 @@ void CreateWire::find_end()
     for (tagint t : ends) listed += fmt::format("{}{}", listed.empty() ? "" : " ", t);
     std::string hint = ends.empty() ? fmt::format("its wire (molecule {}) has no free end: a closed ring", e.molecule)
                                     : fmt::format("the free ends of molecule {}: ID(s) {}", e.molecule, listed);
-    error->all(FLERR, "create_wire {}: node ID {} is not a free end of a wire: it joins {} elements ({}); "
-               "continue from a node with exactly one element; {}", what, end.tag, elements,
-               elements == 0 ? "a lone node" : "an inner node, or a node of a ring", hint);
+    error->all(FLERR, "create_wire {}: node ID {} is not a free end of a wire: it joins {} elements ({}); start from a node of one "
+               "element; {}",
+               what, end.tag, elements, elements == 0 ? "a lone node" : "an inner node, or a node of a ring", hint);
   }
   end.neighbour = partners[end.tag].begin()->first;
   end.bond_type = partners[end.tag].begin()->second;
@@ -416,8 +416,8 @@ void CreateWire::find_end()
 
   auto agree = [&](const char *name, long long given, long long wire, const char *keyword) {
     if (given != wire)
-      error->all(FLERR, "create_wire {}: {} {} differs from the wire's {} at node ID {}; a continued wire keeps "
-                 "its types and molecule: give {} or drop '{}'", what, name, given, wire, end.tag, wire, keyword);
+      error->all(FLERR, "create_wire {}: {} {} differs from the wire's {} at node ID {}; give {} or drop "
+                 "'{}' (doc/create_wire.md, Errors)", what, name, given, wire, end.tag, wire, keyword);
   };
   agree("atom type", r.node_type, end.type, "TYPE");
   if (r.bond_type) agree("bond type", r.bond_type, end.bond_type, "bond");
@@ -438,7 +438,7 @@ void CreateWire::check_room_at_end()
   Request::End &end = r.end;
   const int bonds = atom->bond_per_atom, angles = atom->angle_per_atom;
   auto short_of = [&](const char *what, tagint tag, int stored, int per_atom, const char *keyword) {
-    error->all(FLERR, "create_wire from {}: node ID {} stores {} {}(s) and has room for {}; the join needs one "
+    error->all(FLERR, "create_wire from {}: node ID {} stores {} {}(s), room for {}; the join needs one "
                "more: create the box with '{} {}'", end.tag, tag, stored, what, per_atom, keyword, stored + 1);
   };
   if (force->newton_bond) {
@@ -481,8 +481,8 @@ void CreateWire::check_types()
                  "and 'angle_coeff {} K_ROT' first", r.angle_type, r.angle_type);
   }
   if (atom->bond_per_atom < 1 || (r.angle_type && atom->angle_per_atom < 1))
-    error->all(FLERR, "create_wire: each node stores a bond and an angle; create the box with "
-               "'extra/bond/per/atom 1 extra/angle/per/atom 1' (or more)");
+    error->all(FLERR, "create_wire: each node stores a bond and an angle; create "
+               "the box with 'extra/bond/per/atom 1 extra/angle/per/atom 1'");
   if (r.radius < 0.0) {
     for (Fix *fix : modify->get_fix_by_style("^wire$")) {
       int dim = 0;
@@ -492,9 +492,8 @@ void CreateWire::check_types()
       error->all(FLERR, "create_wire: give the wire radius ('radius RW') or define fix wire first");
   }
   if (r.rest_length < 2.0 * r.radius)
-    error->all(FLERR, "create_wire: element length {} (the rest length of bond type {}) is below "
-               "the wire's diameter {}: neighbouring elements would overlap; use longer elements",
-               r.rest_length, r.bond_type, 2.0 * r.radius);
+    error->all(FLERR, "create_wire: element length {} (rest length of bond type {}) is below the "
+               "wire's diameter {}; use longer elements", r.rest_length, r.bond_type, 2.0 * r.radius);
 }
 
 void CreateWire::lay_out()
@@ -510,13 +509,9 @@ void CreateWire::lay_out()
     error->all(FLERR, "create_wire {}: {}", r.shape_name, e.what());
   }
   const double strain = r.layout.chord / r.rest_length - 1.0;
-  if (std::abs(strain) > kLengthTolerance && !r.strained)
-    error->all(FLERR, "create_wire {}: its {} elements are {:.10g} long, but the rest length of bond "
-               "type {} is {:.10g} (strain {:.3g}); give 'bond_coeff {} K_ELO {:.10g}', {}or add "
-               "'strained yes' to start with that strain", r.shape_name,
-               r.layout.topology.elements.size(), r.layout.chord, r.bond_type, r.rest_length, strain,
-               r.bond_type, r.layout.chord,
-               r.layout.closed ? "change the radius, leave a gap, " : "drop 'nodes', ");
+  if (std::abs(strain) > LENGTH_TOLERANCE && !r.strained)
+    error->all(FLERR, "create_wire {}: elements {:.10g} long, rest length {:.10g} (strain {:.3g}); "
+               "see doc/create_wire.md, Errors", r.shape_name, r.layout.chord, r.rest_length, strain);
   for (nscd::wire::WireElement &e : r.layout.topology.elements) e.rest_length = r.rest_length;
 }
 
@@ -542,9 +537,9 @@ void CreateWire::check_nodes_in_box()
     const double *hi = domain->triclinic ? domain->boxhi_lamda : domain->boxhi;
     for (int d = 0; d < 3; d++)
       if (!domain->periodicity[d] && !(coord[d] >= lo[d] && coord[d] < hi[d]))
-        error->all(FLERR, "create_wire {}: node {} at ({:.6g}, {:.6g}, {:.6g}) is outside the box in {}; "
-                   "move or shrink the path, or enlarge the box", r.shape_name, k + 1, r.layout.nodes[k].x(),
-                   r.layout.nodes[k].y(), r.layout.nodes[k].z(), "xyz"[d]);
+        error->all(FLERR, "create_wire {}: node {} at ({:.6g}, {:.6g}, {:.6g}) is outside the box in {}; move the path or enlarge "
+                   "the box",
+                   r.shape_name, k + 1, r.layout.nodes[k].x(), r.layout.nodes[k].y(), r.layout.nodes[k].z(), "xyz"[d]);
     r.in_box[k] = vec3(x);
     r.images[k] = image;
   }
@@ -593,9 +588,8 @@ void CreateWire::check_overlaps()
   double deepest[2];
   MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
   if (deepest[0] > allowed)
-    error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}, {} x "
-               "the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
-               r.shape_name, (tagint) deepest[1], deepest[0], allowed, r.overlap);
+    error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}); see "
+               "doc/create_wire.md, Errors", r.shape_name, (tagint) deepest[1], deepest[0], allowed);
 
   for (Fix *fix : modify->get_fix_list()) {
     auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
@@ -603,9 +597,8 @@ void CreateWire::check_overlaps()
     for (size_t k = r.first_new(); k < r.in_box.size(); k++) {
       const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
       if (-p.gap > allowed)
-        error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} "
-                   "(allowed: {:.4g}); lay the wire inside the walls, or use 'overlap ignore'",
-                   r.shape_name, k + 1, fix->id, -p.gap, allowed);
+        error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} (allowed: "
+                   "{:.4g}); see doc/create_wire.md, Errors", r.shape_name, k + 1, fix->id, -p.gap, allowed);
     }
   }
 }
@@ -651,9 +644,9 @@ void CreateWire::check_wire_overlaps()
     else if (r.shape == Request::Shape::loop && r.loop.turns > 1.0 && std::abs(r.loop.pitch) < 2.0 * r.radius)
       why = fmt::format("the pitch {:.6g} is below the wire's diameter {:.6g}, so its turns lie on each other: give "
                         "a pitch of at least {:.6g}", r.loop.pitch, 2.0 * r.radius, 2.0 * r.radius);
-    error->all(FLERR, "create_wire {}: the new wire overlaps itself by {:.4g} (allowed: {:.4g}, {} x the wire "
-               "radius) between its elements {}-{} and {}-{} (new nodes numbered along the path); {}", r.shape_name,
-               self.depth, allowed, r.overlap, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
+    error->all(FLERR, "create_wire {}: the new wire overlaps itself by {:.4g} (allowed: {:.4g}) between its elements {}-{} and "
+               "{}-{}; {}",
+               r.shape_name, self.depth, allowed, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
   }
 
   // The wires already there: their nodes and bonds from every rank, each element with its
@@ -691,9 +684,8 @@ void CreateWire::check_wire_overlaps()
   }
   const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing, r.radius, shifts);
   if (other.depth > allowed)
-    error->all(FLERR, "create_wire {}: the new wire overlaps the wire element between atoms ID {} and {} by {:.4g} "
-               "(allowed: {:.4g}, {} x the wire radius); lay it elsewhere, raise 'overlap', or use 'overlap ignore'",
-               r.shape_name, bonds[other.b][0], bonds[other.b][1], other.depth, allowed, r.overlap);
+    error->all(FLERR, "create_wire {}: overlaps the wire element between atoms ID {} and {} by {:.4g}; see "
+               "doc/create_wire.md, Errors", r.shape_name, bonds[other.b][0], bonds[other.b][1], other.depth);
 }
 
 /* Each rank creates the nodes whose positions lie in its sub-domain, with consecutive new

@@ -55,7 +55,8 @@ std::vector<nscd::Vec3> make_sphere_directions()
 }
 }    // namespace
 
-DumpGrainsVTK::DumpGrainsVTK(LAMMPS *lmp, int narg, char **arg) : Dump(lmp, narg, arg)
+DumpGrainsVTK::DumpGrainsVTK(LAMMPS *lmp, int narg, char **arg) :
+    Dump(lmp, narg, arg), avec(nullptr), expected_rows(0), timestep_of_snapshot(0), written(false)
 {
   if (narg != 5)
     error->all(FLERR, "Illegal dump grains/vtk command: expected 'dump ID group grains/vtk N "

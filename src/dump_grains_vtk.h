@@ -47,12 +47,12 @@ class DumpGrainsVTK : public Dump {
     std::vector<double> points;                 // x y z ...
     std::vector<std::vector<int>> polygons;
   };
-  class AtomVecSpheropolyhedron *avec = nullptr;
+  class AtomVecSpheropolyhedron *avec;
   std::map<int, Mesh> meshes;          // by shape id, built on first use
   std::vector<double> snapshot;        // rows gathered on the writing rank
-  bigint expected_rows = 0;
-  bigint timestep_of_snapshot = 0;
-  bool written = false;                // this snapshot's file is complete
+  bigint expected_rows;
+  bigint timestep_of_snapshot;
+  bool written;                        // this snapshot's file is complete
 
   const Mesh &mesh_of(int shape_id);
   void write_file();

@@ -107,7 +107,13 @@ struct FixNSCD::Solver {
                      [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V]
                      [interpenetration F] [skip_separating yes|no] [write_problem STEP FILE] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), solver(std::make_unique<Solver>())
+    Fix(lmp, narg, arg), solver(std::make_unique<Solver>()), exchange_every(1), warn_every(1000),
+    interpenetration_warning(0.2), smallest_rounding(0.0), warned_depth(0.0), dt(0.0), problem_step(-1),
+    pair(nullptr), avec(nullptr), pair_count(0), impulses_with_atoms(false), solved_since_filing(false),
+    records_sent(0.0), values_sent(0.0), records_migrated(0.0), values_migrated(0.0), records_received(0.0),
+    comm_counts(N_COMM_KINDS), exchanges_run(0), reductions_run(0), exchange_mode(Exchange::state),
+    unconverged_steps(0), last_warning_step(-1), last_speed_warning_step(-1), max_step_travel(0.0),
+    kinetic_translational(0.0), kinetic_rotational(0.0), warm_start_dt(0.0)
 {
   time_integrate = 1;
   restart_global = 1;
@@ -146,9 +152,8 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
       problem_file = arg[iarg + 2];
       ++iarg;
     } else if (!set_option(key, value)) {
-      error->all(FLERR, "fix nscd: unknown keyword '{}' (expected theta, tolerance, max_sweeps, "
-                 "relaxation, check, order, seed, exchange, warn, method, coarse, overlap_speed, "
-                 "interpenetration, skip_separating, write_problem)", key);
+      error->all(FLERR, "fix nscd: unknown keyword '{}'; the "
+                 "keywords are listed in doc/fix_nscd.md, Syntax", key);
     }
   }
   solver->options.dt = 1.0;    // validated for real in init(), with the run's timestep
@@ -262,9 +267,8 @@ void FixNSCD::init()
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
   if (update->whichflag == 2)
-    error->all(FLERR, "fix nscd does not work with minimize: rigid grains in contact have no "
-               "potential energy to minimise; let them settle with 'run' (unfix {} first to "
-               "minimise other parts of the system)", id);
+    error->all(FLERR, "fix nscd does not work with minimize: rigid grains "
+               "have no potential energy; use 'run' (or unfix {} first)", id);
   dt = update->dt;
   if (!(dt > 0.0) || !std::isfinite(dt))
     error->all(FLERR, "fix nscd: timestep {} must be positive and finite; set it with 'timestep DT'", dt);
@@ -285,10 +289,8 @@ void FixNSCD::check_overlap_speed()
   const double ahead = pair->activation_distance() + pair->reach_distance();
   const double speed = solver->options.overlap_speed;
   if (speed * dt <= ahead) return;
-  error->all(FLERR, "fix nscd: overlap_speed {} separates overlapping grains by up to {:.4g} per step (timestep "
-             "{}), more than contacts are looked for ahead ({:.4g}, pair_style nscd activation + reach): they "
-             "would run into other grains unseen or fly apart. Use at most {:.4g} (overlap_speed is meant to "
-             "remove small overlaps over a few steps, e.g. 0.05)", speed, speed * dt, dt, ahead, ahead / dt);
+  error->all(FLERR, "fix nscd: overlap_speed {} separates grains by up to {:.4g} per step; "
+             "use at most {:.4g} (doc/fix_nscd.md, Errors)", speed, speed * dt, ahead / dt);
 }
 
 /* A grain also moved by another integrator (fix nve, fix rigid, ...) would move twice per
@@ -301,9 +303,8 @@ void FixNSCD::check_no_other_integrator()
       return (atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit) && avec->shape[i] != 0;
     });
     if (any_shared)
-      error->all(FLERR, "fix nscd: fix {} ({}) also moves grain ID {}, which fix nscd integrates: "
-                 "the grains would move twice per step; remove fix {} or give it a group "
-                 "without the grains", other->id, other->style, any_shared, other->id);
+      error->all(FLERR, "fix nscd: fix {} ({}) also moves grain ID {}; remove fix {} or give "
+                 "it a group without the grains", other->id, other->style, any_shared, other->id);
   }
 }
 
@@ -329,9 +330,8 @@ void FixNSCD::check_no_bonds_on_grains()
   const tagint grain = nscd_checks::lowest_tag_of_all(world, bad[0]);
   if (grain == MAXTAGINT) return;
   const tagint partner = nscd_checks::lowest_tag_of_all(world, bad[0] == grain ? bad[1] : MAXTAGINT);
-  error->all(FLERR, "fix nscd: grain ID {} is in a bond or angle (with atom ID {}); bonds and "
-             "angles join wire nodes (shape 0) only, grains are rigid bodies moved by contacts",
-             grain, partner);
+  error->all(FLERR, "fix nscd: grain ID {} is in a bond or angle (with atom ID "
+             "{}); bonds and angles join wire nodes (shape 0) only", grain, partner);
 }
 
 /* Overlap present at the start is not pushed apart by the solver (contacts only stop
@@ -355,14 +355,8 @@ void FixNSCD::warn_if_grains_overlap()
   for (int r = 0; r < comm->nprocs; r++)
     if (all[4 * r] > worst[0]) std::copy(&all[4 * r], &all[4 * r + 4], worst);
   if (worst[0] > 0.0 && comm->me == 0)
-    error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} ({:.3g} of the smaller "
-                   "one's bounding radius) at the start of the run: deeper than a fifth of it or "
-                   "than their rounding (their cores intersect: the contact normal is then the "
-                   "penetration axis, not necessarily the way they came). Contacts keep "
-                   "overlap from growing but do not push it apart. Place the grains apart (e.g. "
-                   "on a coarser lattice, or delete one of each such pair: compute "
-                   "nscd/overlap/atom), or for shallow overlaps let fix nscd push them apart "
-                   "slowly ('overlap_speed V')",
+    error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} ({:.3g} of the smaller one's bounding "
+                   "radius); doc/fix_nscd.md, Errors",
                    (tagint) worst[1], (tagint) worst[2], worst[3], worst[0]);
 }
 
@@ -373,9 +367,8 @@ void FixNSCD::check_no_points_in_group()
   const tagint any_point =
       nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] == 0; });
   if (any_point)
-    error->all(FLERR, "fix nscd: atom ID {} in group '{}' is a point (shape 0), not a grain; "
-               "give it a shape ('shapes assign') or use a group of grains only", any_point,
-               group->names[igroup]);
+    error->all(FLERR, "fix nscd: atom ID {} in group '{}' is a point (shape 0); give it a shape "
+               "('shapes assign') or use a group of grains", any_point, group->names[igroup]);
 }
 
 /* Core commands can change mass or radius behind the shape library's back (`set mass`,
@@ -393,9 +386,8 @@ void FixNSCD::check_grains_are_consistent()
     return !ok;
   });
   if (any_bad)
-    error->all(FLERR, "fix nscd: grain ID {} has a mass, inertia or radius that does not match "
-               "its shape (changed by 'set'?); set mass and shape with 'shapes assign ... "
-               "density|mass'", any_bad);
+    error->all(FLERR, "fix nscd: grain ID {} has a mass, inertia or radius unlike "
+               "its shape; set both with 'shapes assign ... density|mass'", any_bad);
 }
 
 void FixNSCD::find_partners()
@@ -521,11 +513,9 @@ void FixNSCD::warn_if_interpenetrating()
   warned_depth = depth;
   if (comm->me != 0) return;
   const double tolerance = solver->options.tolerance;
-  error->warning(FLERR, "fix nscd {}: step {}: grains interpenetrate by {:.3g}, {:.2f} of the smallest rounding "
-                 "radius {:.3g} (warning past interpenetration {:.3g}): the solver's tolerance {:.3g} leaves them "
-                 "sinking into each other under this load. Tighten the tolerance (e.g. tolerance {:.3g}) or "
-                 "shorten the timestep", id, update->ntimestep, depth, depth / smallest_rounding,
-                 smallest_rounding, interpenetration_warning, tolerance, tolerance / 10.0);
+  error->warning(FLERR, "fix nscd: step {}: grains interpenetrate by {:.3g}, {:.2f} of the smallest rounding radius {:.3g}; use "
+                 "tolerance {:.3g}",
+                 update->ntimestep, depth, depth / smallest_rounding, smallest_rounding, tolerance / 10.0);
 }
 
 /* After a run: the solver's statistics and the time per part and rank. */
@@ -676,7 +666,7 @@ void FixNSCD::keep_impulses_with_atoms()
   maxexchange = NSCDAtomImpulses::values_for(solver->atom_impulses.longest(0, atom->nlocal));
 }
 
-/* Collective. Reverse communication in rounds of at most kRecordsPerGhost records per ghost
+/* Collective. Reverse communication in rounds of at most RECORDS_PER_GHOST records per ghost
    (LAMMPS' variable-size reverse communication does not work with comm_style tiled), until
    no ghost holds any: each round moves records one hop towards their owners. */
 void FixNSCD::hand_ghost_records_to_owners()
@@ -695,7 +685,7 @@ void FixNSCD::hand_ghost_records_to_owners()
    value (how many ghosts send), covered by the place of any one ghost. */
 int FixNSCD::ghost_records_slot()
 {
-  return 1 + NSCDAtomImpulses::values_for(kRecordsPerGhost) + 1;
+  return 1 + NSCDAtomImpulses::values_for(RECORDS_PER_GHOST) + 1;
 }
 
 /* The record goes to the atom at atom_index (the contact's body) if that is still the
@@ -887,10 +877,8 @@ void FixNSCD::stop_on_non_finite_problem()
     for (size_t k = 0; k < global_bodies.size(); k++)
       if (global_bodies[k] == index) culprit = fmt::format("the body of fix {}", global_body_fixes[k]->id);
   }
-  error->all(FLERR, "fix nscd: step {}: the contact problem has no finite solution (residual {}); "
-             "the largest external impulse, {:.3g}, acts on {}. Check the forces, the plate's load "
-             "and rate, and the timestep", update->ntimestep, solver->report.residual, worst[0],
-             culprit);
+  error->all(FLERR, "fix nscd: step {}: the contact problem has no finite solution (residual {}); the largest "
+             "impulse, {:.3g}, acts on {}", update->ntimestep, solver->report.residual, worst[0], culprit);
 }
 
 void FixNSCD::exchange_velocities()
@@ -1000,10 +988,9 @@ void FixNSCD::warn_if_unconverged()
   if (last_warning_step >= 0 && step - last_warning_step < warn_every) return;
   last_warning_step = step;
   if (comm->me == 0)
-    error->warning(FLERR, "fix nscd: step {} ended unconverged: residual {:.3g} > tolerance {:.3g} "
-                   "after {} sweeps ({} unconverged steps so far); raise max_sweeps, lower the "
-                   "timestep, or check the scene", step, solver->report.residual, solver->options.tolerance,
-                   solver->report.sweeps, unconverged_steps);
+    error->warning(FLERR, "fix nscd: step {} ended unconverged: residual {:.3g} > tolerance {:.3g} after {} sweeps ({} such steps "
+                   "so far)",
+                   step, solver->report.residual, solver->options.tolerance, solver->report.sweeps, unconverged_steps);
 }
 
 /* Contacts are found at the start of a step for gaps below the activation distance. Two
@@ -1023,11 +1010,9 @@ void FixNSCD::warn_if_contacts_can_be_missed()
   if (last_speed_warning_step >= 0 && step - last_speed_warning_step < warn_every) return;
   last_speed_warning_step = step;
   if (comm->me == 0)
-    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step; contacts "
-                   "are activated up to {:.3g} ahead (pair_style nscd activation + reach), so some "
-                   "can be found late (overlap). Raise 'pair_style nscd reach' to {:.3g} or lower "
-                   "the timestep", step, max_step_travel, covered,
-                   needed - pair->activation_distance());
+    error->warning(FLERR, "fix nscd: step {}: grains close gaps of up to {:.3g} per step, contacts are found {:.3g} "
+                   "ahead; raise reach to {:.3g}",
+                   step, max_step_travel, covered, needed - pair->activation_distance());
 }
 
 void FixNSCD::measure_kinetic_energy()
@@ -1147,8 +1132,8 @@ int FixNSCD::pack_reverse_comm(int n, int first, double *buf)
     for (int k = 0; k < n; k++) {
       if (solver->atom_impulses.of(first + k).empty()) continue;
       buf[m++] = k;
-      const int packed = solver->atom_impulses.pack_last(first + k, kRecordsPerGhost, buf + m);
-      records_sent += (double) (packed - 1) / NSCDAtomImpulses::kValuesPerRecord;
+      const int packed = solver->atom_impulses.pack_last(first + k, RECORDS_PER_GHOST, buf + m);
+      records_sent += (double) (packed - 1) / NSCDAtomImpulses::VALUES_PER_RECORD;
       m += packed;
       sending++;
     }
@@ -1186,7 +1171,7 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
     for (int e = 0; e < sending; e++) {
       const int k = (int) buf[m++];
       const int read = solver->atom_impulses.unpack_append(list[k], buf + m);
-      records += (double) (read - 1) / NSCDAtomImpulses::kValuesPerRecord;
+      records += (double) (read - 1) / NSCDAtomImpulses::VALUES_PER_RECORD;
       m += read;
     }
     if (comm_counts.unpacked(COMM_RECORDS, n, m, buf)) records_received += records;

@@ -104,20 +104,20 @@ class FixNSCD : public Fix {
   bool set_option(const std::string &key, const char *value);
   void check_options();
 
-  int exchange_every = 1;       // sweeps between ghost velocity exchanges
-  int warn_every = 1000;        // steps between repeated "unconverged" warnings
-  double interpenetration_warning = 0.2;    // warn past this fraction of the smallest rounding radius
-  double smallest_rounding = 0.0;           // over the group's rounded grains (0: none)
-  double warned_depth = 0.0;                // interpenetration of this run's last such warning
-  double dt = 0.0;
-  bigint problem_step = -1;     // write_problem: the step whose contact problem is written,
+  int exchange_every;           // sweeps between ghost velocity exchanges
+  int warn_every;               // steps between repeated "unconverged" warnings
+  double interpenetration_warning;          // warn past this fraction of the smallest rounding radius
+  double smallest_rounding;                 // over the group's rounded grains (0: none)
+  double warned_depth;                      // interpenetration of this run's last such warning
+  double dt;
+  bigint problem_step;          // write_problem: the step whose contact problem is written,
   std::string problem_file;     //   to this file (.RANK appended on several ranks)
 
-  class PairNSCD *pair = nullptr;
-  class AtomVecSpheropolyhedron *avec = nullptr;
+  class PairNSCD *pair;
+  class AtomVecSpheropolyhedron *avec;
   std::vector<class NSCDBoundary *> boundaries;
   std::vector<Fix *> boundary_fixes;       // the fix of each boundary
-  size_t pair_count = 0;             // problem.contacts: pair_count grain pairs, then each
+  size_t pair_count;                 // problem.contacts: pair_count grain pairs, then each
   std::vector<int> boundary_counts;  // boundary's in turn (as of the last solve)
   std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
   std::vector<Fix *> global_body_fixes;  // their fixes
@@ -125,22 +125,22 @@ class FixNSCD : public Fix {
   // Where the warm-start impulses are: with the atoms (after a restart, or filed before atoms
   // move: pre_exchange, end of a run, write_restart) or in the solver's cache (between list
   // rebuilds). solved_since_filing: the cache holds a solve the atoms do not have yet.
-  bool impulses_with_atoms = false;
-  bool solved_since_filing = false;
-  double records_sent = 0.0;    // records packed for ghosts' owners and migrating atoms, this run,
-  double values_sent = 0.0;     //   and the doubles sent with them (counts, places)
-  double records_migrated = 0.0, values_migrated = 0.0;    // of these, with migrating atoms
-  double records_received = 0.0;    // ghosts' records received from other ranks' ghosts
-  NSCDCommCount comm_counts{N_COMM_KINDS};
-  bigint exchanges_run = 0, reductions_run = 0;
+  bool impulses_with_atoms;
+  bool solved_since_filing;
+  double records_sent;          // records packed for ghosts' owners and migrating atoms, this run,
+  double values_sent;           //   and the doubles sent with them (counts, places)
+  double records_migrated, values_migrated;                // of these, with migrating atoms
+  double records_received;          // ghosts' records received from other ranks' ghosts
+  NSCDCommCount comm_counts;
+  bigint exchanges_run, reductions_run;
 
-  enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode = Exchange::state;
+  enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode;
 
   // diagnostics of the last step (and the solver's report)
-  bigint unconverged_steps = 0, last_warning_step = -1, last_speed_warning_step = -1;
-  double max_step_travel = 0.0;    // largest 2 (|v| + |w| R) dt over the group, last step
-  double kinetic_translational = 0.0, kinetic_rotational = 0.0;
-  double warm_start_dt = 0.0;    // timestep of the stored warm-start impulses
+  bigint unconverged_steps, last_warning_step, last_speed_warning_step;
+  double max_step_travel;          // largest 2 (|v| + |w| R) dt over the group, last step
+  double kinetic_translational, kinetic_rotational;
+  double warm_start_dt;          // timestep of the stored warm-start impulses
 
   void find_partners();
   void check_no_other_integrator();
@@ -156,7 +156,7 @@ class FixNSCD : public Fix {
   void warm_start_contacts();
   void keep_impulses_with_atoms();
   void hand_ghost_records_to_owners();
-  static constexpr int kRecordsPerGhost = 4;    // per ghost and round of hand_ghost_records_to_owners
+  static constexpr int RECORDS_PER_GHOST = 4;    // per ghost and round of hand_ghost_records_to_owners
   // Values per ghost that a round may send: its place, count and records (plus one per message).
   static int ghost_records_slot();
   void keep_record_with(int atom_index, const nscd::ImpulseRecord &record);

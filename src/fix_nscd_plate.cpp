@@ -102,16 +102,16 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   Plate &p = *plate;
   if (narg < 6 || strcmp(arg[4], "mass") != 0)
-    error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix ID group nscd/plate Z mass M "
-               "[load F0] [rate R] [gravity G] [friction MU] [restitution E]'");
+    error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix "
+               "ID group nscd/plate Z mass M [keyword value ...]'");
   p.z = p.z_start = nscd_args::number(lmp, "fix nscd/plate", "height Z", arg[3]);
   if (!std::isfinite(p.z)) error->all(FLERR, "fix nscd/plate: the height {} must be finite", arg[3]);
   p.mass = nscd_args::number(lmp, "fix nscd/plate", "mass", arg[5]);
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
     error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", p.mass);
   if (p.mass < nscd::kMinBodyMass || p.mass > nscd::kMaxBodyMass)
-    error->all(FLERR, "fix nscd/plate: mass {} is outside the {} to {} the solver supports (it squares impulses of "
-               "the order of a body's momentum); change the mass unit", p.mass, nscd::kMinBodyMass, nscd::kMaxBodyMass);
+    error->all(FLERR, "fix nscd/plate: mass {} is outside the {} to {} the solver supports; "
+               "change the mass unit", p.mass, nscd::kMinBodyMass, nscd::kMaxBodyMass);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     const std::string text = nscd_args::keyword_value(
@@ -136,8 +136,7 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
     else if (key == "restitution") p.restitution = value;
   }
   if ((p.fail_window > 0) != (p.fail_sink > 0.0))
-    error->all(FLERR, "fix nscd/plate: fail_sink and fail_window go together (the plate fails when it sinks "
-               "more than fail_sink within fail_window steps); give both or neither");
+    error->all(FLERR, "fix nscd/plate: fail_sink and fail_window go together; give both or neither");
   if (!(p.friction >= 0.0) || !std::isfinite(p.friction))
     error->all(FLERR, "fix nscd/plate: friction {} must be finite and >= 0", p.friction);
   if (!(p.restitution >= 0.0 && p.restitution <= 1.0))
@@ -278,11 +277,8 @@ void FixNSCDPlate::Plate::stop_if_sinking(const nscd::Contact *first, int count)
   double worst = 0.0;
   MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE, MPI_MAX, fix.world);
   if (!(worst > 0.2)) return;
-  fix.error->all(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding radius deep in the "
-                 "grains (velocity {:.4g}) under a load of {:.6g} (load {:.6g} + rate {:.6g} x time {:.6g}): a load "
-                 "this large drives it past its contacts within a step, or further than the solver's relative "
-                 "tolerance holds it. Lower the load or its rate, or the timestep", fix.id, fix.update->ntimestep,
-                 worst, vz, load(), load_start, load_rate, elapsed);
+  fix.error->all(FLERR, "fix nscd/plate {}: step {}: the plate is {:.3g} of a grain's bounding radius deep; "
+                 "lower the load {:.6g} or rate {:.6g}", fix.id, fix.update->ntimestep, worst, load_start, load_rate);
 }
 
 double FixNSCDPlate::compute_vector(int n)

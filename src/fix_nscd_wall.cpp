@@ -179,9 +179,9 @@ void FixNSCDWall::setup(int /*vflag*/)
   const tagint any_outside = nscd_checks::lowest_tag_where(
       lmp, [&](int i) { return (atom->mask[i] & groupbit) && !wall->inside(vec3(atom->x[i])); });
   if (any_outside)
-    error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); "
-               "check the wall's position and that its normal points into the domain", id,
-               any_outside, wall->kind == Wall::Kind::plane ? "behind the plane" : "outside the cylinder");
+    error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); check its position and the normal's "
+               "direction",
+               id, any_outside, wall->kind == Wall::Kind::plane ? "behind the plane" : "outside the cylinder");
   warn_about_grains_in_the_wall();
 }
 
@@ -213,16 +213,12 @@ void FixNSCDWall::warn_about_grains_in_the_wall()
   MPI_Bcast(found, 3, MPI_DOUBLE, worst.rank, world);
   if (comm->me != 0) return;
   if (wall->kind == Wall::Kind::cylinder)
-    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at "
-                   "the start of the run ({:.3g} of its bounding radius {:.4g}){}. Contacts keep the overlap from "
-                   "growing but do not push it out: make the cylinder wider than the grains or place them inside it",
-                   id, (tagint) found[1], found[0], wall->cylinder.radius, worst.share, found[2],
-                   wall->cylinder.radius < found[2] ? "; the radius is below the grain's bounding radius: it may not fit at all" : "");
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at the start of the "
+                   "run{}",
+                   id, (tagint) found[1], found[0], wall->cylinder.radius, wall->cylinder.radius < found[2] ? "; the radius is below the grain's bounding radius" : "");
   else
-    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall at the start of the "
-                   "run ({:.3g} of its bounding radius {:.4g}). Contacts keep the overlap from growing but do not "
-                   "push it out: place the grains in front of the wall", id, (tagint) found[1], found[0],
-                   worst.share, found[2]);
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall "
+                   "at the start of the run; place it in front", id, (tagint) found[1], found[0]);
 }
 
 bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const

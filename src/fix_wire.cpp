@@ -65,7 +65,7 @@ namespace wire = nscd::wire;
 namespace {
 // A step of more wire substeps than this never ends in practice; more than the ratio times
 // what stability needs is warned about.
-constexpr int kMaxSubsteps = 1000000, kWarnSubstepsRatio = 10;
+constexpr int MAX_SUBSTEPS = 1000000, WARN_SUBSTEPS_RATIO = 10;
 
 enum Diagnostic {
   E_AXIAL, E_BENDING, E_CONTACT, N_WIRE_WIRE, N_WIRE_GRAIN, SUBSTEPS, DT_SP, GRAIN_FX, GRAIN_FY,
@@ -79,11 +79,21 @@ enum Diagnostic {
                      [grain_friction TYPES MU_S MU_D] [radius R]
                      [damp C] [substeps N|auto|stable] [dt_sp DT] [safety S] [contacts_per_node N]
                      [skin S] [inertia S] */
-FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(new Lib(this))
+FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), lib(new Lib(this)), gear(nullptr), state_dt(0.0), mu_s_given(false),
+    mu_d_given(false), k_n_given(false), mu_ww_s(-1.0), mu_ww_d(-1.0), contacts_recorded(false),
+    wire_radius(0.0), node_damping(0.0), contact_skin(-1.0), requested_substeps(0), fastest_stable(false),
+    requested_dt_sp(0.0), safety(0.9), contacts_per_node(2.0), inertia_scale(1.0), bond(nullptr),
+    angle(nullptr), avec(nullptr), stable_dt_sp(0.0), owned_nodes(0), grains_anywhere(false), indexed_at(-1),
+    memories_with_atoms(false), longest_element(0.0), comm_mode(Comm::node_state), counting_comm(false),
+    comm_counts(N_COMM_KINDS), migrated(), diagnostics(), largest_tension(0.0), largest_tension_in_run(0.0),
+    strength(0.0), strength_spread(0.0), strength_seed(0.0), breaks_file(nullptr), breaks_given(false),
+    elements_broken(0), topology_changed(false), specials_stale(false), warned_fast_motion(false), timing(),
+    substeps_run(0), rebuilds_at_start(0)
 {
   time_integrate = restart_global = restart_peratom = create_attribute = 1;
   maxexchange_dynamic = 1;    // the friction memories travel with their nodes
-  maxexchange = kGearColumns + 1;
+  maxexchange = GEAR_COLUMNS + 1;
   vector_flag = global_freq = 1;
   size_vector = (int) diagnostics.size();
   extvector = 0;
@@ -108,12 +118,11 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
       error->all(FLERR, "fix wire: wire-wire dynamic friction mu_ww_d = {} exceeds the static mu_ww_s = {}; "
                  "use mu_ww_d <= mu_ww_s", mu_ww_d, mu_ww_s);
     if (!(wire_radius > 0.0))
-      error->all(FLERR, "fix wire: contacts (k_n {}) need a wire radius > 0: elements of radius 0 "
-                 "never touch; give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
+      error->all(FLERR, "fix wire: contacts (k_n {}) need a wire radius > 0; "
+                 "give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
     if (contacts_per_node < 1.0)
-      error->all(FLERR, "fix wire: contacts_per_node {} with contacts (k_n {}): the automatic substep would "
-                 "leave out the contacts' stiffness and damping, and a wire touching anything could gain "
-                 "energy; give contacts_per_node >= 1 (default 2)", contacts_per_node, law.k_n);
+      error->all(FLERR, "fix wire: contacts_per_node {} with contacts (k_n {}); give "
+                 "contacts_per_node >= 1 (doc/fix_wire.md, Errors)", contacts_per_node, law.k_n);
   }
   // A wire of S times the inertia is the same wire in slow motion by sqrt(S) when its
   // dashpots grow by sqrt(S): damping ratios (a contact's restitution) stay as given.
@@ -122,14 +131,13 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg), lib(n
   law.gamma_t *= dashpot_scale;
   node_damping *= dashpot_scale;
   if ((strength_spread > 0.0) != (strength_seed > 0.0) || (strength_spread > 0.0 && !(strength > 0.0)))
-    error->all(FLERR, "fix wire: strength_spread M (the Weibull modulus of the elements' strengths) goes with "
-               "'strength T' and 'seed S' (a positive integer); give all three, or only strength for one "
-               "strength for every element");
+    error->all(FLERR, "fix wire: strength_spread goes with 'strength T' "
+               "and 'seed S' (S > 0); give all three, or strength alone");
   if (strength_seed != std::floor(strength_seed))
     error->all(FLERR, "fix wire: seed {} must be a positive integer", strength_seed);
   if (breaks_given && !(strength > 0.0))
-    error->all(FLERR, "fix wire: 'breaks FILE' records broken elements, but no 'strength' makes any break; give "
-               "'strength T' (the tension at which an element breaks)");
+    error->all(FLERR, "fix wire: 'breaks FILE' but no 'strength' makes any "
+               "break; give 'strength T' (the tension an element breaks at)");
   // a break changes the bond list: it is rebuilt at the next step (Fix leaves next_reneighbor unset)
   next_reneighbor = -1;
   if (strength > 0.0) force_reneighbor = 1;
@@ -227,8 +235,8 @@ void FixWire::parse_grain_friction(int narg, char **arg, int &iarg)
 int FixWire::setmask() { return POST_FORCE | PRE_EXCHANGE; }
 double FixWire::compute_vector(int n)
 {
-  if (n != kTensionDiagnostic && n != kRunTensionDiagnostic) return diagnostics[n];
-  double mine = n == kTensionDiagnostic ? largest_tension : largest_tension_in_run, all = 0.0;
+  if (n != TENSION_DIAGNOSTIC && n != RUN_TENSION_DIAGNOSTIC) return diagnostics[n];
+  double mine = n == TENSION_DIAGNOSTIC ? largest_tension : largest_tension_in_run, all = 0.0;
   MPI_Allreduce(&mine, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   return all;
 }
@@ -248,23 +256,19 @@ void FixWire::init()
   nscd_checks::refuse_second_instance<FixWire>(lmp, this, "one fix handles all wire nodes and their contacts");
   nscd_checks::refuse_migration_before(lmp, this, "its contacts' friction memories");
   if (update->whichflag == 2)
-    error->all(FLERR, "fix wire cannot take part in 'minimize': it integrates the wire nodes on its "
-               "own subcycle and has no minimizer forces; unfix it before minimize (or relax the wire "
-               "with a damped run, fix wire option 'damp')");
+    error->all(FLERR, "fix wire cannot take part in 'minimize'; unfix it "
+               "before minimize, or relax the wire with a damped run ('damp')");
   if (utils::strmatch(update->integrate_style, "^respa"))
-    error->all(FLERR, "fix wire does not work with 'run_style {}': it subcycles the wire itself; use "
-               "'run_style verlet' (fix wire's option 'substeps' sets the wire's inner steps)", update->integrate_style);
+    error->all(FLERR, "fix wire does not work with 'run_style {}'; use 'run_style verlet' "
+               "(option 'substeps' sets the wire's inner steps)", update->integrate_style);
   nscd_units::require_plain_mechanics(lmp, "fix wire");
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");
   avec = AtomVecSpheropolyhedron::find(lmp, "fix wire");
   if (inertia_scale > 1.0 && comm->me == 0)
-    error->warning(FLERR, "fix wire: inertia {}: the wire nodes move as if {} times heavier, with their weight "
-                   "and springs unchanged and their dashpots {:.3g} times stronger: the wire's own motion runs "
-                   "{:.3g} times slower (a free wire falls at g/{}) and takes {:.3g} times fewer substeps; for "
-                   "quasi-static phases only (doc/fix_wire.md)", inertia_scale, inertia_scale,
-                   std::sqrt(inertia_scale), std::sqrt(inertia_scale), inertia_scale, std::sqrt(inertia_scale));
+    error->warning(FLERR, "fix wire: inertia {}: the wire moves {:.3g} times slower; for quasi-static "
+                   "phases only (doc/fix_wire.md, Errors)", inertia_scale, std::sqrt(inertia_scale));
   check_partners();
   find_boundaries();
   check_contacts_possible();
@@ -285,8 +289,8 @@ void FixWire::check_partners()
   const tagint any_grain =
       nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] != 0; });
   if (any_grain)
-    error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the group must "
-               "hold wire nodes (shape 0) only, grains belong to fix nscd", any_grain, group->names[igroup]);
+    error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the "
+               "group must hold wire nodes (shape 0) only", any_grain, group->names[igroup]);
   // post_force fixes after this one on its nodes change forces the subcycle has already used
   auto acts_on_nodes = [&](const Fix *other) {
     int mine = 0, any = 0;
@@ -299,9 +303,8 @@ void FixWire::check_partners()
   for (int f = 0; f < modify->nfix; f++) {
     if (modify->fix[f] == this) after = true;
     else if (after && (modify->fmask[f] & POST_FORCE) && acts_on_nodes(modify->fix[f]) && comm->me == 0)
-      error->warning(FLERR, "fix wire: fix {} ({}) is defined after fix wire and acts in post_force: "
-                     "the wire subcycle does not see its forces; define it before fix wire",
-                     modify->fix[f]->id, modify->fix[f]->style);
+      error->warning(FLERR, "fix wire: fix {} ({}) is defined after fix wire and acts in post_force, "
+                     "unseen by the wire; define it before", modify->fix[f]->id, modify->fix[f]->style);
   }
 }
 
@@ -340,9 +343,8 @@ void FixWire::check_contacts_possible()
   if (!grains && lib->boundaries.empty()) return;
   const char *what = grains ? (lib->boundaries.empty() ? "grains" : "grains, walls and plate") : "walls and plate";
   if (!k_n_given)
-    error->all(FLERR, "fix wire {}: no contact stiffness k_n given: with the default 0 the wire has no contacts and "
-               "passes through the {} of this scene; give 'k_n K' with 'radius R' (and gamma_n, k_t, mu_s as "
-               "needed), or 'k_n 0' for a wire that touches nothing", id, what);
+    error->all(FLERR, "fix wire {}: no contact stiffness k_n given: the wire passes "
+               "through the {}; give 'k_n K' and 'radius R', or 'k_n 0'", id, what);
   if (comm->me == 0)
     error->warning(FLERR, "fix wire {}: k_n 0: the wire has no contacts and passes through the {} of this scene",
                    id, what);
@@ -392,26 +394,23 @@ void FixWire::plan_substeps()
                                       : wire::plan_subcycle(update->dt, automatic_dt_sp, requested_substeps);
     wire::check_wire_step(lib->plan.dt_sp, w, kind, safety);
   } catch (std::exception &e) {
-    error->all(FLERR, "fix wire: {} (wire stability limit dt_SP max = {:.6g}). Ways out: fix wire option "
-               "'substeps auto' (default), a larger 'substeps N', a smaller 'dt_sp', or a smaller timestep",
-               e.what(), stable_dt_sp);
+    error->all(FLERR, "fix wire: {} (stability limit dt_SP max = {:.6g}); use "
+               "'substeps auto' (doc/fix_wire.md, Errors)", e.what(), stable_dt_sp);
   }
-  if (lib->plan.substeps > kWarnSubstepsRatio * needed && comm->me == 0)
-    error->warning(FLERR, "fix wire: {} asks for {} wire substeps per step, {:.0f} times the {} the stability "
-                   "limit needs: each step costs that much more wire time for no gain in stability; use "
-                   "'substeps auto'", requested_substeps_text(), lib->plan.substeps,
-                   (double) lib->plan.substeps / needed, needed);
+  if (lib->plan.substeps > WARN_SUBSTEPS_RATIO * needed && comm->me == 0)
+    error->warning(FLERR, "fix wire: {} asks for {} wire substeps per step, {:.0f} times the {} the stability limit needs; use "
+                   "'substeps auto'",
+                   requested_substeps_text(), lib->plan.substeps, (double) lib->plan.substeps / needed, needed);
 }
 
 /* More substeps than stability needs only cost time; far more is a mistake (a dt_sp meant
-   for another timestep or unit system), and beyond kMaxSubsteps a step never ends. */
+   for another timestep or unit system), and beyond MAX_SUBSTEPS a step never ends. */
 void FixWire::refuse_absurd_substeps(int needed)
 {
   const double asked = requested_dt_sp > 0.0 ? update->dt / requested_dt_sp : (double) requested_substeps;
-  if (asked > kMaxSubsteps && asked > needed)
-    error->all(FLERR, "fix wire: {} asks for {:.6g} wire substeps per step, more than {}: a step would take "
-               "minutes; the stability limit needs {} (substeps stable)", requested_substeps_text(), asked,
-               kMaxSubsteps, needed);
+  if (asked > MAX_SUBSTEPS && asked > needed)
+    error->all(FLERR, "fix wire: {} asks for {:.6g} wire substeps per step, more than {}; the stability "
+               "limit needs {} (substeps stable)", requested_substeps_text(), asked, MAX_SUBSTEPS, needed);
 }
 
 std::string FixWire::requested_substeps_text() const
@@ -516,28 +515,25 @@ void FixWire::warn_about_elements_inside_grains()
   }
   MPI_Bcast(found, 4, MPI_DOUBLE, worst.rank, world);
   if (comm->me == 0)
-    error->warning(FLERR, "fix wire {}: the wire element of nodes ID {} and {} lies inside grain ID {} by {:.4g} "
-                   "({:.3g} wire radii) at the start of the run; its contact (k_n {:.6g}) will push it out at about "
-                   "{:.3g} (depth x sqrt(k_n / node mass)). Lay the wire outside the grains (create_wire checks this "
-                   "unless 'overlap ignore') or move the grain", id, (tagint) found[0], (tagint) found[1],
-                   (tagint) found[2], worst.depth, worst.depth / wire_radius, lib->law.k_n,
-                   worst.depth * std::sqrt(lib->law.k_n / found[3]));
+    error->warning(FLERR, "fix wire {}: element {}-{} lies inside grain ID {} by {:.4g} ({:.3g} wire radii) at the start (doc/fix_wire.md, "
+                   "Errors)",
+                   id, (tagint) found[0], (tagint) found[1], (tagint) found[2], worst.depth, worst.depth / wire_radius);
 }
 
 /* Elements far from their rest length at the start of a run (two wires joined by
    create_bonds with one long element of a shared bond type, 'create_wire ... strained yes'
    with a wrong rest length, a hand-made data file): such an element pulls its nodes with
    k_elo x strain from the first substep and can fling them, and the grains they touch. Warned
-   about when the length is more than kStrainWarning (10 %) off the rest length: far beyond
+   about when the length is more than STRAIN_WARNING (10 %) off the rest length: far beyond
    what the examples' loads stretch (k_elo 5000: a strain of 1e-3 is a tension of 5) and what
    'strained yes' is meant for (a ring's chord a few % off). newton_bond on (fix wire's
    restriction): each element is in exactly one rank's bond list. */
 void FixWire::warn_about_strained_elements()
 {
-  constexpr double kStrainWarning = 0.1;
+  constexpr double STRAIN_WARNING = 0.1;
   if (!bond) return;
   double worst[2] = {0.0, (double) comm->me};    // |strain|, rank
-  std::array<double, 5> found = {0.0, 0.0, 0.0, 0.0, 0.0};    // node IDs, length, rest length, k_elo
+  std::array<double, 4> found = {0.0, 0.0, 0.0, 0.0};    // node IDs, length, rest length
   bigint count = 0;
   for (int n = 0; n < neighbor->nbondlist; n++) {
     const int i = neighbor->bondlist[n][0], j = neighbor->bondlist[n][1], type = neighbor->bondlist[n][2];
@@ -546,11 +542,11 @@ void FixWire::warn_about_strained_elements()
     const double strain = length / rest - 1.0;
     const wire::AxialLaw law = bond->law(type);
     if (strain < 0.0 && !law.resists_compression) continue;    // a slack string pulls nothing
-    if (!(std::abs(strain) > kStrainWarning)) continue;
+    if (!(std::abs(strain) > STRAIN_WARNING)) continue;
     count++;
     if (std::abs(strain) > worst[0]) {
       worst[0] = std::abs(strain);
-      found = {(double) atom->tag[i], (double) atom->tag[j], length, rest, law.k_elo};
+      found = {(double) atom->tag[i], (double) atom->tag[j], length, rest};
     }
   }
   bigint total = 0;
@@ -558,15 +554,11 @@ void FixWire::warn_about_strained_elements()
   if (total == 0) return;
   double deepest[2];
   MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
-  MPI_Bcast(found.data(), 5, MPI_DOUBLE, (int) deepest[1], world);
-  const double ratio = found[2] / found[3];
+  MPI_Bcast(found.data(), 4, MPI_DOUBLE, (int) deepest[1], world);
   if (comm->me == 0)
-    error->warning(FLERR, "fix wire {}: {} wire element(s) start more than {:.0f} % away from their rest length; the "
-                   "worst, nodes ID {} and {}, is {:.4g} long for a rest length of {:.4g} ({:.3g} x), a force of "
-                   "k_elo x strain = {:.4g} on its nodes from the first step that can fling them and the grains they "
-                   "touch. Join wires with 'create_wire ... from ID' (elements at the rest length), or give such an "
-                   "element a bond type of its own rest length", id, total, 100.0 * kStrainWarning,
-                   (tagint) found[0], (tagint) found[1], found[2], found[3], ratio, found[4] * std::abs(ratio - 1.0));
+    error->warning(FLERR, "fix wire {}: {} elements start over {:.0f} % from their rest length, worst {:.3g} x "
+                   "(IDs {}-{}); doc/fix_wire.md, Errors", id, total, 100.0 * STRAIN_WARNING,
+                   found[2] / found[3], (tagint) found[0], (tagint) found[1]);
 }
 
 void FixWire::reset_dt()
@@ -607,10 +599,9 @@ void FixWire::gather_elements()
   const double needed = std::max(R + L + wire_radius, 2.0 * L + 2.0 * wire_radius) + neighbor->skin;
   const double have = std::max(neighbor->cutneighmax, comm->cutghostuser);
   if (have < needed)
-    error->all(FLERR, "fix wire: ghost cutoff {:.6g} is below the reach {:.6g} of a wire contact "
-               "(max(largest grain radius {:.6g} + L + r_w, 2 L + 2 r_w) + skin, with element length "
-               "L = {:.6g}, r_w = {:.6g}) across {}; use 'comm_modify cutoff {:.6g}'", have, needed, R, L,
-               wire_radius, comm->nprocs > 1 ? "MPI ranks" : "a periodic boundary", needed);
+    error->all(FLERR, "fix wire: ghost cutoff {:.6g} is below the reach {:.6g} of a wire contact across {}; use "
+               "'comm_modify cutoff {:.6g}'",
+               have, needed, comm->nprocs > 1 ? "MPI ranks" : "a periodic boundary", needed);
 }
 
 /* ---------------------------------------------------------------------- the step */
@@ -674,8 +665,8 @@ void FixWire::index_atoms()
   t.joints.clear();
   auto node = [&](int i) {
     if (node_of_atom[i] < 0)
-      error->one(FLERR, "fix wire: atom ID {} is a grain but belongs to a wire bond or angle; wire "
-                 "elements and joints join wire nodes (shape 0) only", atom->tag[i]);
+      error->one(FLERR, "fix wire: atom ID {} is a grain but belongs to a wire "
+                 "bond or angle; these join wire nodes (shape 0) only", atom->tag[i]);
     return node_of_atom[i];
   };
   for (int n = 0; bond && n < neighbor->nbondlist; n++) {
@@ -710,7 +701,7 @@ void FixWire::load_nodes()
   for (int k = 0; k < owned_nodes; k++) {
     const int i = atom_of_node[k];
     wire::Gear5State &s = nodes.state[k];
-    if (gear[i][kGearColumns - 1] != 0.0) s.unpack(gear[i]);
+    if (gear[i][GEAR_COLUMNS - 1] != 0.0) s.unpack(gear[i]);
     else s = wire::gear5_start(vec3(atom->x[i]), vec3(atom->v[i]), Vec3::Zero(), dt);
     s.r[0] = lib->step_start[k] = vec3(atom->x[i]);
     s.r[1] = vec3(atom->v[i]) * dt;
@@ -740,7 +731,7 @@ void FixWire::store_nodes()
     store(nodes.state[k].position(), atom->x[i]);
     store(nodes.state[k].velocity(lib->plan.dt_sp), atom->v[i]);
     nodes.state[k].pack(gear[i]);
-    gear[i][kGearColumns - 1] = 1.0;
+    gear[i][GEAR_COLUMNS - 1] = 1.0;
   }
   communicate(Comm::node_position, false);    // ghosts at the final positions, for output
 }
@@ -783,8 +774,8 @@ void FixWire::update_scene(bool reindexed)
     for (auto e = std::lower_bound(elements.begin(), elements.end(), from); e != elements.end() && *e <= to; ++e) {
       const int j = element_partner(i, (*e)[1]);
       if ((j < 0 || node_of_atom[j] < 0) && i < atom->nlocal)
-        error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank owning node ID "
-                   "{}; increase the ghost cutoff with 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
+        error->one(FLERR, "fix wire: node ID {} of the element {}-{} is missing on the rank of "
+                   "node ID {}; raise 'comm_modify cutoff'", (*e)[1], (*e)[0], (*e)[1], (*e)[0]);
       if (j >= 0 && node_of_atom[j] >= 0) scene.elements.push_back({k, node_of_atom[j], (*e)[0], (*e)[1], i < atom->nlocal});
     }
   }
@@ -821,11 +812,9 @@ void FixWire::check_motion_within_skin()
   if (closing <= neighbor->skin) return;
   diagnostics[STEPS_TOO_FAST] += 1.0;
   if (!warned_fast_motion && comm->me == 0)
-    error->warning(FLERR, "fix wire: at step {} a wire node moved {:.4g} and a grain {:.4g} in one step, "
-                   "closing by more than the neighbour skin {:.4g}: contacts with atoms beyond the ghost "
-                   "cutoff can be missed (output 13 counts such steps). Use a smaller timestep or a larger "
-                   "skin ('neighbor {:.4g} bin')", update->ntimestep, largest[0], largest[1], neighbor->skin,
-                   2.0 * closing);
+    error->warning(FLERR, "fix wire: step {}: a node moved {:.4g}, a grain {:.4g}: over the skin {:.4g}; "
+                   "lower the timestep or use neighbor {:.4g}", update->ntimestep, largest[0], largest[1],
+                   neighbor->skin, 2.0 * closing);
   warned_fast_motion = true;
 }
 

@@ -84,12 +84,12 @@ class FixWire : public Fix {
   void unpack_reverse_comm(int, int *, double *) override;
 
   // compute wire/contacts: recording of contact points from the next step on, and the
-  // points of the last step computed on this rank, kContactColumns numbers a row
+  // points of the last step computed on this rank, CONTACT_COLUMNS numbers a row
   // (doc/compute_wire_contacts.md).
-  static constexpr int kContactColumns = 16;
+  static constexpr int CONTACT_COLUMNS = 16;
   enum ContactColumn { ROW_NODE_1 = 0, ROW_OTHER = 2, ROW_KIND = 3, ROW_POINT = 4, ROW_NORMAL = 7, ROW_NORMAL_FORCE = 10,
                        ROW_TANGENTIAL_FORCE = 11 };
-  static constexpr double kRowWireGrain = 1.0;    // ROW_KIND of a wire-grain contact
+  static constexpr double ROW_WIRE_GRAIN = 1.0;    // ROW_KIND of a wire-grain contact
   void record_contacts();
   std::vector<double> contact_rows() const;
 
@@ -117,81 +117,81 @@ class FixWire : public Fix {
   std::unique_ptr<Lib> lib;
 
   // Gear state per atom: 18 scaled derivatives, then 1 if the state is initialised.
-  static constexpr int kGearColumns = 19;
-  double **gear = nullptr;
-  double state_dt = 0.0;        // the step the stored scaled derivatives refer to
+  static constexpr int GEAR_COLUMNS = 19;
+  double **gear;
+  double state_dt;              // the step the stored scaled derivatives refer to
 
   // options
-  bool mu_s_given = false, mu_d_given = false;    // a lone one sets both
-  bool k_n_given = false;                          // k_n 0 given, or the default
-  double mu_ww_s = -1.0, mu_ww_d = -1.0;           // wire-wire friction; < 0: not given
+  bool mu_s_given, mu_d_given;                    // a lone one sets both
+  bool k_n_given;                                  // k_n 0 given, or the default
+  double mu_ww_s, mu_ww_d;                         // wire-wire friction; < 0: not given
   struct GrainFriction {
     int lo, hi;                  // grain types
     double mu_s, mu_d;
   };
   std::vector<GrainFriction> grain_friction;    // option grain_friction, in the order given
   std::vector<int> grain_law_of_type;           // per atom type: the contact model's law
-  bool contacts_recorded = false;                  // for compute wire/contacts
-  double wire_radius = 0.0, node_damping = 0.0, contact_skin = -1.0;
-  int requested_substeps = 0;    // 0: from dt_sp or chosen (auto or stable)
-  bool fastest_stable = false;    // substeps stable: the stable step, not the accurate one
-  double requested_dt_sp = 0.0, safety = 0.9, contacts_per_node = 2.0;
-  double inertia_scale = 1.0;    // the nodes' inertia over their mass (option inertia)
+  bool contacts_recorded;                          // for compute wire/contacts
+  double wire_radius, node_damping, contact_skin;
+  int requested_substeps;        // 0: from dt_sp or chosen (auto or stable)
+  bool fastest_stable;            // substeps stable: the stable step, not the accurate one
+  double requested_dt_sp, safety, contacts_per_node;
+  double inertia_scale;          // the nodes' inertia over their mass (option inertia)
 
-  class BondWire *bond = nullptr;
-  class AngleWire *angle = nullptr;
-  class AtomVecSpheropolyhedron *avec = nullptr;
-  double stable_dt_sp = 0.0;
+  class BondWire *bond;
+  class AngleWire *angle;
+  class AtomVecSpheropolyhedron *avec;
+  double stable_dt_sp;
 
   // Index of each local atom (owned and ghost) among the wire nodes (-1: a grain), the
   // nodes' and the grains' atoms; rebuilt with LAMMPS' neighbour lists.
   std::vector<int> node_of_atom, atom_of_node, atom_of_grain;
-  int owned_nodes = 0;
-  bool grains_anywhere = false;    // on some rank, owned or ghost: the grain exchanges are collective
-  bigint indexed_at = -1;       // neighbour build the indices belong to
+  int owned_nodes;
+  bool grains_anywhere;            // on some rank, owned or ghost: the grain exchanges are collective
+  bigint indexed_at;            // neighbour build the indices belong to
   // Where the friction memories are: with the atoms that compute their contacts (after a
   // restart, or filed before atoms move: pre_exchange, the end of a run, write_restart) or
   // in the contact model (while the atoms stay on their ranks).
-  bool memories_with_atoms = false;
+  bool memories_with_atoms;
 
   // Global wire topology, the same on every rank: (lower tag, higher tag) of each element.
   std::vector<std::array<tagint, 2>> elements;
-  double longest_element = 0.0;
+  double longest_element;
 
-  enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force } comm_mode = Comm::node_state;
-  bool counting_comm = false;                // the subcycle's communication: counted
-  NSCDCommCount comm_counts{N_COMM_KINDS};
-  std::array<double, 2> migrated{};          // memories packed with migrating atoms, their doubles
+  enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force } comm_mode;
+  bool counting_comm;                        // the subcycle's communication: counted
+  NSCDCommCount comm_counts;
+  std::array<double, 2> migrated;            // memories packed with migrating atoms, their doubles
   std::vector<double> grain_force_buffer;    // 6 per local atom
 
-  std::array<double, 16> diagnostics{};
-  static constexpr int kBrokenDiagnostic = 13;    // elements broken so far (option strength)
+  std::array<double, 16> diagnostics;
+  static constexpr int BROKEN_DIAGNOSTIC = 13;    // elements broken so far (option strength)
   // The largest element tension at this step's start and over every step since the fix was
   // defined, on this rank (compute_vector takes the maximum over the ranks).
-  static constexpr int kTensionDiagnostic = 14, kRunTensionDiagnostic = 15;
-  double largest_tension = 0.0, largest_tension_in_run = 0.0;
+  static constexpr int TENSION_DIAGNOSTIC = 14, RUN_TENSION_DIAGNOSTIC = 15;
+  double largest_tension, largest_tension_in_run;
 
   // option strength (fix_wire_break.cpp)
-  double strength = 0.0;            // tension at which an element breaks; 0: never
-  double strength_spread = 0.0;     // Weibull modulus of the elements' strengths; 0: all equal
-  double strength_seed = 0.0;       // their seed (option seed)
+  double strength;                  // tension at which an element breaks; 0: never
+  double strength_spread;           // Weibull modulus of the elements' strengths; 0: all equal
+  double strength_seed;             // their seed (option seed)
   double element_strength(tagint a, tagint b) const;
-  FILE *breaks_file = nullptr;      // option breaks: one line per break (rank 0)
-  bool breaks_given = false;        // on every rank (the file is open on rank 0 only)
-  bigint elements_broken = 0;
-  bool topology_changed = false;    // elements broke: gather the topology after the next build
-  bool specials_stale = false;      // elements broke: rebuild the special lists (pre_exchange)
+  FILE *breaks_file;                // option breaks: one line per break (rank 0)
+  bool breaks_given;                // on every rank (the file is open on rank 0 only)
+  bigint elements_broken;
+  bool topology_changed;            // elements broke: gather the topology after the next build
+  bool specials_stale;              // elements broke: rebuild the special lists (pre_exchange)
   void check_element_tensions();
   void remove_from_topology(const std::vector<struct WireBreak> &broken);
   void report_breaks(const std::vector<struct WireBreak> &broken);
-  bool warned_fast_motion = false;
+  bool warned_fast_motion;
 
   // fix wire's own timing of the run (printed after it): seconds, node-substeps, doubles sent
   enum Timing { T_TOTAL, T_CPU, T_CONTACTS, T_ELASTIC, T_INTEGRATION, T_COMM, T_COMM_STEP, T_NODE_SUBSTEPS,
                 T_SENT, T_SENT_ALL_ATOMS, N_TIMING };
-  std::array<double, N_TIMING> timing{};
-  bigint substeps_run = 0;
-  int rebuilds_at_start = 0;
+  std::array<double, N_TIMING> timing;
+  bigint substeps_run;
+  int rebuilds_at_start;
 
   void parse_option(int narg, char **arg, int &iarg);
   void parse_grain_friction(int narg, char **arg, int &iarg);

@@ -147,7 +147,7 @@ void FixWire::pre_exchange()
 void FixWire::report_breaks(const std::vector<Break> &broken)
 {
   elements_broken += (bigint) broken.size();
-  diagnostics[kBrokenDiagnostic] = (double) elements_broken;
+  diagnostics[BROKEN_DIAGNOSTIC] = (double) elements_broken;
   if (comm->me != 0) return;
   for (const Break &b : broken) {
     const auto line = fmt::format("{} {} {} {:.10g} {:.10g} {:.10g} {:.10g}", update->ntimestep, (tagint) b.id_a,

@@ -126,42 +126,42 @@ void FixWire::unpack_reverse_comm(int n, int *list, double *buf)
 
 /* ---------------------------------------------------------------------- per-atom state */
 
-/* Per atom: the Gear state (kGearColumns values) and the friction memories of the contacts
+/* Per atom: the Gear state (GEAR_COLUMNS values) and the friction memories of the contacts
    the atom computes (lib->atom_memories, while they are kept with the atoms). */
 void FixWire::grow_arrays(int nmax)
 {
-  memory->grow(gear, nmax, kGearColumns, "wire:gear");
+  memory->grow(gear, nmax, GEAR_COLUMNS, "wire:gear");
   lib->atom_memories.grow(nmax);
 }
 
 /* delflag: atom i is deleted (exchange, delete_atoms): its memories move, not copy. */
 void FixWire::copy_arrays(int i, int j, int delflag)
 {
-  std::copy(gear[i], gear[i] + kGearColumns, gear[j]);
+  std::copy(gear[i], gear[i] + GEAR_COLUMNS, gear[j]);
   lib->atom_memories.copy(i, j);
   if (delflag && i != j) lib->atom_memories.clear(i);
 }
 
 void FixWire::set_arrays(int i)
 {
-  std::fill(gear[i], gear[i] + kGearColumns, 0.0);
+  std::fill(gear[i], gear[i] + GEAR_COLUMNS, 0.0);
   lib->atom_memories.clear(i);
 }
 
 int FixWire::pack_exchange(int i, double *buf)
 {
-  std::copy(gear[i], gear[i] + kGearColumns, buf);
-  const int values = lib->atom_memories.pack(i, buf + kGearColumns);
+  std::copy(gear[i], gear[i] + GEAR_COLUMNS, buf);
+  const int values = lib->atom_memories.pack(i, buf + GEAR_COLUMNS);
   migrated[0] += (double) lib->atom_memories.of(i).size();
   migrated[1] += values;
-  return kGearColumns + values;
+  return GEAR_COLUMNS + values;
 }
 
 int FixWire::unpack_exchange(int nlocal, double *buf)
 {
-  std::copy(buf, buf + kGearColumns, gear[nlocal]);
+  std::copy(buf, buf + GEAR_COLUMNS, gear[nlocal]);
   lib->atom_memories.clear(nlocal);
-  const int m = kGearColumns + lib->atom_memories.unpack_append(nlocal, buf + kGearColumns);
+  const int m = GEAR_COLUMNS + lib->atom_memories.unpack_append(nlocal, buf + GEAR_COLUMNS);
   maxexchange = std::max(maxexchange, m);    // this rank may pass the atom on before the next filing
   return m;
 }
@@ -170,12 +170,12 @@ int FixWire::unpack_exchange(int nlocal, double *buf)
    atom's friction memories in nscd_restart's per-atom format}. */
 int FixWire::size_restart(int i)
 {
-  return 1 + kGearColumns + nscd_restart::atom_memories_values(lib->atom_memories.of(i).size());
+  return 1 + GEAR_COLUMNS + nscd_restart::atom_memories_values(lib->atom_memories.of(i).size());
 }
 
 int FixWire::maxsize_restart()
 {
-  const int mine = 1 + kGearColumns + nscd_restart::atom_memories_values(lib->atom_memories.longest(0, atom->nlocal));
+  const int mine = 1 + GEAR_COLUMNS + nscd_restart::atom_memories_values(lib->atom_memories.longest(0, atom->nlocal));
   int all = mine;
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
   return all;
@@ -184,49 +184,47 @@ int FixWire::maxsize_restart()
 int FixWire::pack_restart(int i, double *buf)
 {
   buf[0] = size_restart(i);    // LAMMPS convention: the count includes this slot
-  std::copy(gear[i], gear[i] + kGearColumns, buf + 1);
-  nscd_restart::write_atom_memories(lib->atom_memories.of(i), buf + 1 + kGearColumns);
+  std::copy(gear[i], gear[i] + GEAR_COLUMNS, buf + 1);
+  nscd_restart::write_atom_memories(lib->atom_memories.of(i), buf + 1 + GEAR_COLUMNS);
   return (int) buf[0];
 }
 
 /* The atom's values of the nth fix in atom->extra, each fix's preceded by its count (this
-   fix's: 1 + kGearColumns, then the memories' values; files of wire format 3 and older
+   fix's: 1 + GEAR_COLUMNS, then the memories' values; files of wire format 3 and older
    have no memories per atom). A count, state or memory that cannot be is refused, naming
    the atom. */
 void FixWire::unpack_restart(int nlocal, int nth)
 {
   const double *extra = atom->extra[nlocal];
   const int width = atom->nextra_store;
-  constexpr int gear_only = 1 + kGearColumns, least_with_memories = gear_only + nscd_restart::atom_memories_values(0);
+  constexpr int gear_only = 1 + GEAR_COLUMNS, least_with_memories = gear_only + nscd_restart::atom_memories_values(0);
   int m = 0;
   for (int k = 0; k <= nth; k++) {
     const double count = m < width ? extra[m] : 0.0;
     const bool mine = k == nth;
     if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) ||
         (mine && count != gear_only && count < least_with_memories))
-      error->one(FLERR, "fix wire {}: the restart file's per-atom values of atom ID {} are damaged (a count of {} "
-                 "where {} fit); define fix wire with another ID to start without them", id, atom->tag[nlocal],
-                 count, mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m) :
-                 fmt::format("{}", width - m));
+      error->one(FLERR, "fix wire {}: restart per-atom values of atom ID {} are damaged (a count of {} where {} fit); see doc/fix_wire.md, "
+                 "Errors",
+                 id, atom->tag[nlocal], count, mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m) : fmt::format("{}", width - m));
     if (!mine) m += (int) count;
   }
   const double *state = extra + m + 1;
-  const double started = state[kGearColumns - 1];
-  for (int c = 0; c < kGearColumns; c++)
-    if (!std::isfinite(state[c]) || (c == kGearColumns - 1 && started != 0.0 && started != 1.0))
-      error->one(FLERR, "fix wire {}: the restart file's Gear state of atom ID {} holds {} (value {} of {}): "
-                 "it is damaged; define fix wire with another ID to start without it", id, atom->tag[nlocal],
-                 state[c], c + 1, kGearColumns);
-  std::copy(state, state + kGearColumns, gear[nlocal]);
+  const double started = state[GEAR_COLUMNS - 1];
+  for (int c = 0; c < GEAR_COLUMNS; c++)
+    if (!std::isfinite(state[c]) || (c == GEAR_COLUMNS - 1 && started != 0.0 && started != 1.0))
+      error->one(FLERR, "fix wire {}: the restart file's Gear state of atom ID {} holds {} (value {} of "
+                 "{}); see doc/fix_wire.md, Errors", id, atom->tag[nlocal], state[c], c + 1, GEAR_COLUMNS);
+  std::copy(state, state + GEAR_COLUMNS, gear[nlocal]);
   if (extra[m] == gear_only) return;    // wire format 3 or older: restart() kept the atom's memories
   try {
     const auto values = (std::size_t) extra[m] - gear_only;
-    lib->atom_memories.set(nlocal, nscd_restart::read_atom_memories(state + kGearColumns, values, atom->tag[nlocal]));
+    lib->atom_memories.set(nlocal, nscd_restart::read_atom_memories(state + GEAR_COLUMNS, values, atom->tag[nlocal]));
   } catch (nscd_restart::Damaged &e) {
-    error->one(FLERR, "fix wire {}: the friction memories in the restart file cannot be used: {}. To start without "
-               "them, define fix wire with another ID", id, e.what());
+    error->one(FLERR, "fix wire {}: the friction memories in the restart file "
+               "cannot be used: {}; see doc/fix_wire.md, Errors", id, e.what());
   }
-  maxexchange = std::max(maxexchange, kGearColumns + lib->atom_memories.values(nlocal));
+  maxexchange = std::max(maxexchange, GEAR_COLUMNS + lib->atom_memories.values(nlocal));
   memories_with_atoms = true;
 }
 
@@ -234,7 +232,7 @@ void FixWire::unpack_restart(int nlocal, int nth)
 void FixWire::rescale_states(double new_dt)
 {
   for (int i = 0; i < atom->nlocal && state_dt > 0.0 && state_dt != new_dt; i++) {
-    if (gear[i][kGearColumns - 1] == 0.0) continue;
+    if (gear[i][GEAR_COLUMNS - 1] == 0.0) continue;
     wire::Gear5State s;
     s.unpack(gear[i]);
     wire::gear5_change_step(s, state_dt, new_dt);
@@ -281,7 +279,7 @@ void FixWire::file_with_owned_nodes(const std::vector<wire::StoredContact> &memo
     if (i >= 0 && i < atom->nlocal) lib->atom_memories.add(i, c);
   }
   memories_with_atoms = true;
-  maxexchange = kGearColumns + lib->atom_memories.values_for(lib->atom_memories.longest(0, atom->nlocal));
+  maxexchange = GEAR_COLUMNS + lib->atom_memories.values_for(lib->atom_memories.longest(0, atom->nlocal));
 }
 
 bool FixWire::owned_here(tagint tag) const
@@ -322,7 +320,7 @@ double FixWire::memory_usage()
       capacity_bytes(lib->step_start) + lib->atom_memories.memory_bytes();
   for (const auto &r : nodes.arrays.r) bytes += capacity_bytes(r);
   if (lib->contacts) bytes += lib->contacts->memory_bytes();
-  return (double) atom->nmax * kGearColumns * sizeof(double) + (double) bytes;
+  return (double) atom->nmax * GEAR_COLUMNS * sizeof(double) + (double) bytes;
 }
 
 /* Global restart: the step of the stored Gear states (format: nscd_restart_blocks.h); the
@@ -440,11 +438,11 @@ std::vector<double> FixWire::contact_rows() const
     double other = (double) c.key[2];
     for (size_t b = 0; b < lib->boundaries.size() && c.kind == wire::ContactRecord::wire_boundary; b++)
       if (lib->boundaries[b].link.id == c.key[2]) other = -(double) (b + 1);
-    const double row[kContactColumns] = {
+    const double row[CONTACT_COLUMNS] = {
         (double) c.key[0], (double) c.key[1], other, (double) c.kind, c.point.x(), c.point.y(), c.point.z(),
         c.normal.x(), c.normal.y(), c.normal.z(), c.normal_force, c.tangential_force.x(), c.tangential_force.y(),
         c.tangential_force.z(), c.overlap, c.sliding ? 1.0 : 0.0};
-    rows.insert(rows.end(), row, row + kContactColumns);
+    rows.insert(rows.end(), row, row + CONTACT_COLUMNS);
   }
   return rows;
 }

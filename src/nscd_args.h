@@ -50,8 +50,8 @@ inline double number(LAMMPS *lmp, const std::string &where, const std::string &k
   errno = 0;
   const double x = std::strtod(text.c_str(), nullptr);
   if (errno == ERANGE || !std::isfinite(x))
-    lmp->error->all(FLERR, "{}: {} {} is beyond the range of double precision numbers (magnitudes from about "
-                    "2.2e-308 to 1.8e308); change the units or the value", where, key, text);
+    lmp->error->all(FLERR, "{}: {} {} is beyond the range of double precision "
+                    "numbers; change the units or the value", where, key, text);
   return x;
 }
 

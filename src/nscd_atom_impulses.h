@@ -28,7 +28,7 @@
 namespace LAMMPS_NS {
 
 using NSCDAtomImpulses = NSCDAtomRecords<nscd::ImpulseRecord>;
-static_assert(NSCDAtomImpulses::kValuesPerRecord == nscd_restart::kValuesPerImpulseRecord,
+static_assert(NSCDAtomImpulses::VALUES_PER_RECORD == nscd_restart::VALUES_PER_IMPULSE_RECORD,
               "an impulse record's doubles in restart files and in exchange buffers");
 
 }    // namespace LAMMPS_NS

@@ -37,7 +37,7 @@ template <class Record> class NSCDAtomRecords {
                 "a record travels as whole doubles");
 
  public:
-  static constexpr int kValuesPerRecord = (int) (sizeof(Record) / sizeof(double));
+  static constexpr int VALUES_PER_RECORD = (int) (sizeof(Record) / sizeof(double));
 
   void grow(int nmax) { lists.resize(nmax); }
   void copy(int from, int to)
@@ -52,7 +52,7 @@ template <class Record> class NSCDAtomRecords {
 
   // Doubles that pack() writes for atom i, and for an atom of `count` records.
   int values(int i) const { return values_for(lists[i].size()); }
-  static int values_for(std::size_t count) { return 1 + kValuesPerRecord * (int) count; }
+  static int values_for(std::size_t count) { return 1 + VALUES_PER_RECORD * (int) count; }
   int pack(int i, double *buf) const
   {
     const std::vector<Record> &list = lists[i];

@@ -73,11 +73,12 @@ class NSCDBoundary {
   }
 
  protected:
+  NSCDBoundary() : wire_force(nscd::Vec3::Zero()), wire_force_step(-1) {}
   ~NSCDBoundary() = default;    // its fix owns it, never deleted through this interface
 
  private:
-  nscd::Vec3 wire_force = nscd::Vec3::Zero();
-  bigint wire_force_step = -1;
+  nscd::Vec3 wire_force;
+  bigint wire_force_step;
 };
 
 }    // namespace LAMMPS_NS

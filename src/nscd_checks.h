@@ -78,9 +78,9 @@ inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *wha
   for (const Fix *other : lmp->modify->get_fix_list()) {
     if (other == fix) return;
     if (other->pre_exchange_migrate)
-      lmp->error->all(FLERR, "fix {} {} must be defined before fix {} {}, which moves atoms between ranks before "
-                      "fix {} can hand {} to them; define fix {} after fix {}", fix->style, fix->id, other->style,
-                      other->id, fix->style, what, other->id, fix->style);
+      lmp->error->all(FLERR, "fix {} {} must be defined before fix {} {}, which moves atoms before fix {} hands "
+                      "them {}; define it after",
+                      fix->style, fix->id, other->style, other->id, fix->style, what);
   }
 }
 
@@ -89,10 +89,10 @@ inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *wha
 // it) if it is damaged.
 template <class Read>
 auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *way_out)
-    -> decltype(read(bytes, nscd_restart::kUnknownSize))
+    -> decltype(read(bytes, nscd_restart::UNKNOWN_SIZE))
 {
   try {
-    return read(bytes, nscd_restart::kUnknownSize);
+    return read(bytes, nscd_restart::UNKNOWN_SIZE);
   } catch (nscd_restart::Damaged &e) {
     lmp->error->all(FLERR, "fix {} {}: its restart block cannot be used: {}. {}", fix->style, fix->id, e.what(),
                     way_out);

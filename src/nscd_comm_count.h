@@ -32,13 +32,14 @@ namespace LAMMPS_NS {
 class NSCDCommCount {
  public:
   struct Tally {
-    double messages = 0.0;    // received from other ranks
-    double bytes = 0.0;       // their doubles, 8 bytes each
-    double atoms = 0.0;       // the atoms they were for
+    Tally() : messages(0.0), bytes(0.0), atoms(0.0) {}
+    double messages;    // received from other ranks
+    double bytes;       // their doubles, 8 bytes each
+    double atoms;       // the atoms they were for
   };
   static_assert(sizeof(Tally) == 3 * sizeof(double), "summed() reduces a Tally as 3 doubles");
 
-  explicit NSCDCommCount(int kinds) : tallies(kinds) {}
+  explicit NSCDCommCount(int kinds) : tallies(kinds), last_packed(nullptr) {}
 
   // In pack_forward_comm and pack_reverse_comm: the buffer being filled.
   void packed(const double *buffer) { last_packed = buffer; }
@@ -67,7 +68,7 @@ class NSCDCommCount {
 
  private:
   std::vector<Tally> tallies;
-  const double *last_packed = nullptr;
+  const double *last_packed;
 };
 
 }    // namespace LAMMPS_NS

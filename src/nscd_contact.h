@@ -38,10 +38,10 @@ namespace nscd_contact {
 // one adds no force. `base` is the smallest activation (a geometric tolerance). A speed
 // that is not finite gives `base`: the solve then stops naming the body (fix nscd), rather
 // than a geometric query failing on one rank.
-constexpr double kSpeculativeMargin = 1.5;
+constexpr double SPECULATIVE_MARGIN = 1.5;
 inline double speculative_activation(double base, double closing_speed, double dt)
 {
-  const double ahead = kSpeculativeMargin * closing_speed * dt;
+  const double ahead = SPECULATIVE_MARGIN * closing_speed * dt;
   return std::isfinite(ahead) ? std::max(base, ahead) : base;
 }
 

@@ -16,14 +16,14 @@
    their format and size, and a reader that never reads past the size and refuses anything it cannot check.
 
    A global fix block, as LAMMPS writes it, is: the size in bytes of what follows (int,
-   LAMMPS' own field), then our header {kMagic, version} (two int32), then, from the
+   LAMMPS' own field), then our header {MAGIC, version} (two int32), then, from the
    "sized" format of each style on, the payload's size in bytes (int64), then the payload.
    LAMMPS hands Fix::restart() the bytes after its size field but not the size itself, so the
    block repeats it: every count inside the payload is checked against that size before
    anything is read or allocated, so a damaged count, size or mark is refused, never
    trusted. (Only a size and a count damaged alike, or LAMMPS' own size field, could still
    lead the reader astray; LAMMPS' own check of the file's end catches most of the latter.)
-   Blocks that do not begin with kMagic (damaged, or written before blocks carried a
+   Blocks that do not begin with MAGIC (damaged, or written before blocks carried a
    format) are refused; the one exception is fix wire's format 2, which began with the
    number -2 and is recognised by it (read_wire_block in nscd_restart_blocks.cpp).
 
@@ -44,13 +44,13 @@
 namespace LAMMPS_NS {
 namespace nscd_restart {
 
-constexpr std::int32_t kMagic = 0x4e534344;    // "NSCD" (as bytes on a little-endian machine: "DCSN")
-constexpr std::size_t kMarkBytes = 2 * sizeof(std::int32_t);                     // {kMagic, version}
-constexpr std::size_t kSizedHeaderBytes = kMarkBytes + sizeof(std::int64_t);    // and the payload size
-constexpr std::int32_t kNewestKnown = 1000;    // a larger version number is damage, not a newer build
+constexpr std::int32_t MAGIC = 0x4e534344;    // "NSCD" (as bytes on a little-endian machine: "DCSN")
+constexpr std::size_t MARK_BYTES = 2 * sizeof(std::int32_t);                     // {MAGIC, version}
+constexpr std::size_t SIZED_HEADER_BYTES = MARK_BYTES + sizeof(std::int64_t);    // and the payload size
+constexpr std::int32_t NEWEST_KNOWN = 1000;    // a larger version number is damage, not a newer build
 // LAMMPS does not tell a fix how many bytes its block holds: the reader then relies on the
 // size the block states (the fuzz targets pass the true size).
-constexpr std::size_t kUnknownSize = std::numeric_limits<std::size_t>::max();
+constexpr std::size_t UNKNOWN_SIZE = std::numeric_limits<std::size_t>::max();
 
 // A block that is damaged, foreign or of a format this build cannot check; the message says
 // what is wrong with it (the caller adds the style and ID).
@@ -58,15 +58,15 @@ struct Damaged : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The header of a block with its payload size: {kMagic, version, payload bytes}, then the
+// The header of a block with its payload size: {MAGIC, version, payload bytes}, then the
 // payload (LAMMPS' own size field is written in front by write_block).
 inline std::string sized_header(std::int32_t version, std::size_t payload_bytes)
 {
-  std::string bytes(kSizedHeaderBytes, '\0');
-  const std::int32_t mark[2] = {kMagic, version};
+  std::string bytes(SIZED_HEADER_BYTES, '\0');
+  const std::int32_t mark[2] = {MAGIC, version};
   const std::int64_t size = (std::int64_t) payload_bytes;
-  std::memcpy(&bytes[0], mark, kMarkBytes);
-  std::memcpy(&bytes[kMarkBytes], &size, sizeof(size));
+  std::memcpy(&bytes[0], mark, MARK_BYTES);
+  std::memcpy(&bytes[MARK_BYTES], &size, sizeof(size));
   return bytes;
 }
 
@@ -78,8 +78,8 @@ inline void write_block(FILE *fp, const std::string &block)
   fwrite(block.data(), 1, block.size(), fp);
 }
 
-// The format version of a block's mark {kMagic, version}: refuses a block without the mark,
-// or with a version number no build writes (< 1 or above kNewestKnown).
+// The format version of a block's mark {MAGIC, version}: refuses a block without the mark,
+// or with a version number no build writes (< 1 or above NEWEST_KNOWN).
 inline std::int32_t version_of_mark(const std::int32_t mark[2])
 {
   auto hex = [](std::int32_t x) {
@@ -87,17 +87,17 @@ inline std::int32_t version_of_mark(const std::int32_t mark[2])
     std::snprintf(text, sizeof(text), "%08x", (unsigned) x);
     return std::string(text);
   };
-  if (mark[0] != kMagic)
-    throw Damaged("it does not begin with this package's mark (0x" + hex(mark[0]) + " instead of 0x" + hex(kMagic) +
+  if (mark[0] != MAGIC)
+    throw Damaged("it does not begin with this package's mark (0x" + hex(mark[0]) + " instead of 0x" + hex(MAGIC) +
                   "): the file is damaged, or was written before restart blocks carried a format (a build "
                   "older than Nov 2026)");
-  if (mark[1] < 1 || mark[1] > kNewestKnown)
+  if (mark[1] < 1 || mark[1] > NEWEST_KNOWN)
     throw Damaged("its format number " + std::to_string(mark[1]) + " is not one this package writes (1 to " +
-                  std::to_string(kNewestKnown) + "): it is damaged");
+                  std::to_string(NEWEST_KNOWN) + "): it is damaged");
   return mark[1];
 }
 
-// Reads a block front to back within `available` bytes (kUnknownSize: as many as the block
+// Reads a block front to back within `available` bytes (UNKNOWN_SIZE: as many as the block
 // states); every read past the end throws Damaged.
 class BlockReader {
  public:
@@ -117,10 +117,10 @@ class BlockReader {
     std::int64_t size;
     take(&size, sizeof(size), "its size");
     // LAMMPS stores a block's size as an int: no block is larger
-    const std::int64_t largest = std::numeric_limits<int>::max() - (std::int64_t) kSizedHeaderBytes;
+    const std::int64_t largest = std::numeric_limits<int>::max() - (std::int64_t) SIZED_HEADER_BYTES;
     if (size < 0 || size > largest || (std::uint64_t) size > left_)
       throw Damaged("it states a payload of " + std::to_string(size) + " bytes, but " +
-                    (left_ == kUnknownSize ? std::string("that is impossible") : std::to_string(left_) + " follow") +
+                    (left_ == UNKNOWN_SIZE ? std::string("that is impossible") : std::to_string(left_) + " follow") +
                     ": the block is damaged or cut short");
     left_ = (std::size_t) size;
   }
@@ -137,7 +137,7 @@ class BlockReader {
   template <class Record> std::vector<Record> records(std::int64_t count, const char *what)
   {
     static_assert(std::is_trivially_copyable<Record>::value, "plain records only");
-    if (left_ == kUnknownSize) throw std::logic_error("BlockReader: records of a block without a size");
+    if (left_ == UNKNOWN_SIZE) throw std::logic_error("BlockReader: records of a block without a size");
     if (count < 0 || (std::uint64_t) count > left_ / sizeof(Record))
       throw Damaged("it counts " + std::to_string(count) + " " + what + " of " + std::to_string(sizeof(Record)) +
                     " bytes, but only " + std::to_string(left_) + " bytes are left: the count is damaged");
@@ -166,7 +166,7 @@ class BlockReader {
                     std::to_string(left_) + " left): the block is damaged or cut short");
     std::memcpy(to, at_, n);
     at_ += n;
-    if (left_ != kUnknownSize) left_ -= n;
+    if (left_ != UNKNOWN_SIZE) left_ -= n;
   }
 
 };

@@ -27,7 +27,7 @@ namespace {
 
 static_assert(sizeof(nscd::ImpulseRecord) == 48, "fix nscd's restart record layout changed");
 static_assert(sizeof(nscd::wire::StoredContact) == 4 * 8 + 2 * 4 * 8 + 2 * 8, "fix wire's restart record layout changed");
-constexpr double kOldWireFormat = -2.0;    // fix wire's format 2 began with this double
+constexpr double OLD_WIRE_FORMAT = -2.0;    // fix wire's format 2 began with this double
 
 std::string number(double x)
 {
@@ -114,14 +114,14 @@ std::string solver_block(const SolverBlock &state)
   append(payload, (std::int64_t) state.records.size());
   append(payload, state.dt);
   append_records(payload, state.records);
-  return with_header(kSolverFormat, payload);
+  return with_header(SOLVER_FORMAT, payload);
 }
 
 SolverBlock read_solver_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   SolverBlock out;
-  out.format = open_block(in, kSolverFormat, 3, "the contacts' impulses");    // 3 and 4: one layout
+  out.format = open_block(in, SOLVER_FORMAT, 3, "the contacts' impulses");    // 3 and 4: one layout
   if (out.format < 3) {    // no size: the stored count cannot be checked
     out.read = false;
     return out;
@@ -167,7 +167,7 @@ std::vector<Record> read_atom_records(const double *values, std::size_t availabl
   const double format = values[0], count = values[1];
   if (format != format_read)
     throw Damaged(atom + " holds " + names.held + " in format " + number(format) +
-                  (format > format_read && format <= kNewestKnown && format == std::floor(format)
+                  (format > format_read && format <= NEWEST_KNOWN && format == std::floor(format)
                        ? ", this build reads format " + std::to_string(format_read) + "; use a newer build"
                        : ", which no build writes: the file is damaged"));
   if (!(count >= 0.0) || count != std::floor(count) || count > (double) (available - 2) / per_record ||
@@ -192,14 +192,14 @@ std::vector<Record> read_atom_records(const double *values, std::size_t availabl
 
 void write_atom_impulses(const std::vector<nscd::ImpulseRecord> &records, double *out)
 {
-  write_atom_records(kAtomImpulsesFormat, records, out);
+  write_atom_records(ATOM_IMPULSES_FORMAT, records, out);
 }
 
 std::vector<nscd::ImpulseRecord> read_atom_impulses(const double *values, std::size_t available, std::int64_t tag)
 {
   static const AtomRecordNames names{"warm-start values", "its warm-start impulses", "warm-start records",
                                      "warm-start record"};
-  return read_atom_records<nscd::ImpulseRecord>(values, available, tag, kAtomImpulsesFormat, names,
+  return read_atom_records<nscd::ImpulseRecord>(values, available, tag, ATOM_IMPULSES_FORMAT, names,
                                                 check_impulse_record,
                                                 [](const nscd::ImpulseRecord &r) { return r.tag_i; });
 }
@@ -212,7 +212,7 @@ std::string wire_block(const WireBlock &state)
   append(payload, state.dt);
   append(payload, (std::int64_t) state.memories.size());
   append_records(payload, state.memories);
-  return with_header(kWireFormat, payload);
+  return with_header(WIRE_FORMAT, payload);
 }
 
 namespace {
@@ -227,7 +227,7 @@ WireBlock read_wire_block(const char *block, std::size_t available)
   WireBlock out;
   {
     BlockReader first(block, available);
-    if (first.value<double>("its first number") == kOldWireFormat) {    // format 2: {-2, dt, count, records}
+    if (first.value<double>("its first number") == OLD_WIRE_FORMAT) {    // format 2: {-2, dt, count, records}
       out.format = 2;
       out.memories_read = false;
       out.dt = first.value<double>("the substep");
@@ -236,7 +236,7 @@ WireBlock read_wire_block(const char *block, std::size_t available)
     }
   }
   BlockReader in(block, available);
-  out.format = open_block(in, kWireFormat, 3, "the wire's state");
+  out.format = open_block(in, WIRE_FORMAT, 3, "the wire's state");
   if (out.format < 3)    // formats 1 and 2 had no mark: this one is not ours
     throw Damaged("format " + std::to_string(out.format) + " of fix wire never had this mark: the block is damaged");
   out.dt = in.value<double>("the substep");
@@ -250,7 +250,7 @@ WireBlock read_wire_block(const char *block, std::size_t available)
 
 void write_atom_memories(const std::vector<nscd::wire::StoredContact> &memories, double *out)
 {
-  write_atom_records(kAtomMemoriesFormat, memories, out);
+  write_atom_records(ATOM_MEMORIES_FORMAT, memories, out);
 }
 
 std::vector<nscd::wire::StoredContact> read_atom_memories(const double *values, std::size_t available,
@@ -258,7 +258,7 @@ std::vector<nscd::wire::StoredContact> read_atom_memories(const double *values, 
 {
   static const AtomRecordNames names{"wire memory values", "its wire friction memories", "wire friction memories",
                                      "wire friction memory"};
-  return read_atom_records<nscd::wire::StoredContact>(values, available, tag, kAtomMemoriesFormat, names,
+  return read_atom_records<nscd::wire::StoredContact>(values, available, tag, ATOM_MEMORIES_FORMAT, names,
                                                       check_stored_contact,
                                                       [](const nscd::wire::StoredContact &c) { return c.key[0]; });
 }
@@ -270,14 +270,14 @@ std::string wall_block(const WallBlock &state)
   std::string payload;
   append(payload, state.cylinder ? 1.0 : 0.0);
   for (double x : state.point) append(payload, x);
-  return with_header(kWallFormat, payload);
+  return with_header(WALL_FORMAT, payload);
 }
 
 WallBlock read_wall_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   WallBlock out;
-  out.format = open_block(in, kWallFormat, 2, "the wall");
+  out.format = open_block(in, WALL_FORMAT, 2, "the wall");
   const double kind = in.value<double>("the wall's kind");
   if ((kind != 0.0 && kind != 1.0) || std::signbit(kind))    // exactly as written (not -0)
     throw Damaged("the wall's kind is " + number(kind) + " (0 for a plane, 1 for a cylinder): the block is damaged");
@@ -296,14 +296,14 @@ std::string plate_block(const PlateBlock &state)
 {
   std::string payload;
   for (double x : {state.z, state.vz, state.elapsed, state.z_start}) append(payload, x);
-  return with_header(kPlateFormat, payload);
+  return with_header(PLATE_FORMAT, payload);
 }
 
 PlateBlock read_plate_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   PlateBlock out;
-  out.format = open_block(in, kPlateFormat, 2, "the plate");
+  out.format = open_block(in, PLATE_FORMAT, 2, "the plate");
   const char *names[4] = {"the plate's z", "the plate's velocity", "the plate's loading time", "the plate's first z"};
   double *values[4] = {&out.z, &out.vz, &out.elapsed, &out.z_start};
   for (int k = 0; k < 4; k++) {
@@ -321,8 +321,8 @@ PlateBlock read_plate_block(const char *block, std::size_t available)
 std::string pair_settings_bytes(const PairSettings &s)
 {
   std::string bytes;
-  append(bytes, kMagic);
-  append(bytes, kPairFormat);
+  append(bytes, MAGIC);
+  append(bytes, PAIR_FORMAT);
   for (double x : {s.activation_given, s.activation_fraction, s.reach_given, s.reach_fraction}) append(bytes, x);
   return bytes;
 }
@@ -353,8 +353,8 @@ void check_pair_settings(const PairSettings &s)
   };
   distance(s.activation_given, "the activation");
   distance(s.reach_given, "the reach");
-  fraction(s.activation_fraction, kMaxActivationFraction, "the activation fraction");
-  fraction(s.reach_fraction, kMaxReachFraction, "the reach fraction");
+  fraction(s.activation_fraction, MAX_ACTIVATION_FRACTION, "the activation fraction");
+  fraction(s.reach_fraction, MAX_REACH_FRACTION, "the reach fraction");
 }
 
 void check_pair_coefficient(const PairCoefficient &c)

@@ -40,9 +40,9 @@ namespace nscd_restart {
 // (below). Format 3: the same layout with every contact's record (files written before the
 // impulses were kept with the atoms; read, and each rank keeps those of its own atoms).
 // Formats 1 and 2 (no size: their count cannot be checked) are recognised and not read.
-constexpr std::int32_t kSolverFormat = 4;
+constexpr std::int32_t SOLVER_FORMAT = 4;
 struct SolverBlock {
-  std::int32_t format = kSolverFormat;    // as found in the block
+  std::int32_t format = SOLVER_FORMAT;    // as found in the block
   bool read = true;                        // false: an older format, nothing read
   double dt = 0.0;
   std::vector<nscd::ImpulseRecord> records;
@@ -54,9 +54,9 @@ SolverBlock read_solver_block(const char *block, std::size_t available);
 // from the atom (tag_i = its ID; a contact between two grains is kept by both).
 // Format 1: {double format, double count, count x 6 doubles (the 48 bytes of an
 // ImpulseRecord)}. LAMMPS adds the number of values in front (Fix::pack_restart).
-constexpr std::int32_t kAtomImpulsesFormat = 1;
-constexpr int kValuesPerImpulseRecord = sizeof(nscd::ImpulseRecord) / sizeof(double);
-constexpr int atom_impulses_values(std::size_t count) { return 2 + kValuesPerImpulseRecord * (int) count; }
+constexpr std::int32_t ATOM_IMPULSES_FORMAT = 1;
+constexpr int VALUES_PER_IMPULSE_RECORD = sizeof(nscd::ImpulseRecord) / sizeof(double);
+constexpr int atom_impulses_values(std::size_t count) { return 2 + VALUES_PER_IMPULSE_RECORD * (int) count; }
 // Writes the atom's records to `out` (atom_impulses_values(records.size()) doubles).
 void write_atom_impulses(const std::vector<nscd::ImpulseRecord> &records, double *out);
 // Reads what write_atom_impulses wrote, `available` values, for the atom of ID `tag`.
@@ -69,9 +69,9 @@ std::vector<nscd::ImpulseRecord> read_atom_impulses(const double *values, std::s
 // read, and each rank keeps those of the nodes it owns). Format 2 (before the common
 // header: the double -2, dt, the count as a double, the records) is recognised: dt is read,
 // the memories are not.
-constexpr std::int32_t kWireFormat = 4;
+constexpr std::int32_t WIRE_FORMAT = 4;
 struct WireBlock {
-  std::int32_t format = kWireFormat;
+  std::int32_t format = WIRE_FORMAT;
   bool memories_read = true;
   double dt = 0.0;
   std::vector<nscd::wire::StoredContact> memories;
@@ -83,18 +83,18 @@ WireBlock read_wire_block(const char *block, std::size_t available);
 // the atom computes (key[0] = its ID: an element's first node, or a node on a boundary).
 // Format 1: {double format, double count, count x 14 doubles (the 112 bytes of a
 // StoredContact)}. Files of wire format 3 and older hold the Gear state alone.
-constexpr std::int32_t kAtomMemoriesFormat = 1;
-constexpr int kValuesPerStoredContact = sizeof(nscd::wire::StoredContact) / sizeof(double);
-constexpr int atom_memories_values(std::size_t count) { return 2 + kValuesPerStoredContact * (int) count; }
+constexpr std::int32_t ATOM_MEMORIES_FORMAT = 1;
+constexpr int VALUES_PER_STORED_CONTACT = sizeof(nscd::wire::StoredContact) / sizeof(double);
+constexpr int atom_memories_values(std::size_t count) { return 2 + VALUES_PER_STORED_CONTACT * (int) count; }
 void write_atom_memories(const std::vector<nscd::wire::StoredContact> &memories, double *out);
 std::vector<nscd::wire::StoredContact> read_atom_memories(const double *values, std::size_t available,
                                                           std::int64_t tag);
 
 // ---- fix nscd/wall: the wall's kind (0 plane, 1 cylinder) and reference point.
 // Format 2 (sized): 4 doubles; format 1: the same 4 doubles without the size.
-constexpr std::int32_t kWallFormat = 2;
+constexpr std::int32_t WALL_FORMAT = 2;
 struct WallBlock {
-  std::int32_t format = kWallFormat;
+  std::int32_t format = WALL_FORMAT;
   bool cylinder = false;
   std::array<double, 3> point{0.0, 0.0, 0.0};
 };
@@ -103,22 +103,22 @@ WallBlock read_wall_block(const char *block, std::size_t available);
 
 // ---- fix nscd/plate: z, vz, the time its load has grown for, z at the start.
 // Format 2 (sized): 4 doubles; format 1: the same without the size.
-constexpr std::int32_t kPlateFormat = 2;
+constexpr std::int32_t PLATE_FORMAT = 2;
 struct PlateBlock {
-  std::int32_t format = kPlateFormat;
+  std::int32_t format = PLATE_FORMAT;
   double z = 0.0, vz = 0.0, elapsed = 0.0, z_start = 0.0;
 };
 std::string plate_block(const PlateBlock &state);
 PlateBlock read_plate_block(const char *block, std::size_t available);
 
 // ---- pair_style nscd: LAMMPS gives a pair style the file, not a block. Settings:
-// {kMagic, 1}, then activation given (-1: not given), activation fraction, reach given (-1),
+// {MAGIC, 1}, then activation given (-1: not given), activation fraction, reach given (-1),
 // reach fraction; then per type pair i <= j: int setflag (0 or 1), and if set friction and
 // restitution. Read by `Source` (a BlockReader, or the pair's file reader), which has
 // version() and value<T>().
-constexpr std::int32_t kPairFormat = 1;
-constexpr double kMaxActivationFraction = 1.0;    // of the smallest grain's bounding radius
-constexpr double kMaxReachFraction = 20.0;
+constexpr std::int32_t PAIR_FORMAT = 1;
+constexpr double MAX_ACTIVATION_FRACTION = 1.0;    // of the smallest grain's bounding radius
+constexpr double MAX_REACH_FRACTION = 20.0;
 struct PairSettings {
   double activation_given = -1.0, activation_fraction = 0.1, reach_given = -1.0, reach_fraction = 0.5;
 };
@@ -134,9 +134,9 @@ void check_pair_coefficient(const PairCoefficient &c);    // throws Damaged
 template <class Source> PairSettings read_pair_settings(Source &in)
 {
   const std::int32_t format = in.version();
-  if (format > kPairFormat)
+  if (format > PAIR_FORMAT)
     throw Damaged("the settings are in format " + std::to_string(format) + ", this build reads formats up to " +
-                  std::to_string(kPairFormat) + "; use a newer build");
+                  std::to_string(PAIR_FORMAT) + "; use a newer build");
   PairSettings s;
   s.activation_given = in.template value<double>("the activation");
   s.activation_fraction = in.template value<double>("the activation fraction");

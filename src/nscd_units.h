@@ -34,9 +34,8 @@ namespace nscd_units {
 inline void require_plain_mechanics(LAMMPS *lmp, const char *style)
 {
   if (lmp->force->ftm2v == 1.0 && lmp->force->mvv2e == 1.0) return;
-  lmp->error->all(FLERR, "{}: units {} convert force to mass x acceleration by a factor {:.6g}, which "
-                  "this package does not apply; use units lj, si, cgs, micro or nano (doc/units.md)",
-                  style, lmp->update->unit_style, lmp->force->ftm2v);
+  lmp->error->all(FLERR, "{}: units {} convert force to mass x acceleration by {:.6g}; use units lj, si, "
+                  "cgs, micro or nano (doc/units.md)", style, lmp->update->unit_style, lmp->force->ftm2v);
 }
 
 }    // namespace nscd_units

@@ -52,7 +52,10 @@ struct PairNSCD::Found {
   nscd::ContactWorkspace workspace;
 };
 
-PairNSCD::PairNSCD(LAMMPS *lmp) : Pair(lmp), found(std::make_unique<Found>())
+PairNSCD::PairNSCD(LAMMPS *lmp) :
+    Pair(lmp), activation_given(-1.0), activation_fraction(0.1), activation(0.0), reach_given(-1.0),
+    reach_fraction(0.5), reach(0.0), mu(nullptr), restitution_coeff(nullptr), avec(nullptr),
+    found(std::make_unique<Found>())
 {
   single_enable = 0;
   restartinfo = 1;
@@ -103,9 +106,8 @@ void PairNSCD::settings(int narg, char **arg)
   auto once = [&](std::string &given_as, const char *key, const char *value) {
     const std::string now = fmt::format("{} {}", key, value);
     if (!given_as.empty())
-      error->all(FLERR, "pair_style nscd: '{}' and '{}' both set the {} distance; give it once, as a distance "
-                 "or as a fraction of the smallest grain's bounding radius", given_as, now,
-                 strncmp(key, "activation", 10) == 0 ? "activation" : "reach");
+      error->all(FLERR, "pair_style nscd: '{}' and '{}' both set the {} distance; give it "
+                 "once", given_as, now, strncmp(key, "activation", 10) == 0 ? "activation" : "reach");
     given_as = now;
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
@@ -120,10 +122,9 @@ void PairNSCD::settings(int narg, char **arg)
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
       once(activation_as, arg[iarg], arg[iarg + 1]);
-      if (!(value >= 0.0 && value <= nscd_restart::kMaxActivationFraction))
-        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, {}] (a fraction of "
-                   "the smallest grain's bounding radius); for fast grains lower the timestep",
-                   value, nscd_restart::kMaxActivationFraction);
+      if (!(value >= 0.0 && value <= nscd_restart::MAX_ACTIVATION_FRACTION))
+        error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, {}]; for fast "
+                   "grains lower the timestep", value, nscd_restart::MAX_ACTIVATION_FRACTION);
       activation_given = -1.0;
       activation_fraction = value;
     } else if (strcmp(arg[iarg], "reach") == 0) {
@@ -133,9 +134,9 @@ void PairNSCD::settings(int narg, char **arg)
       reach_given = value;
     } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
       once(reach_as, arg[iarg], arg[iarg + 1]);
-      if (!(value >= 0.0 && value <= nscd_restart::kMaxReachFraction))
+      if (!(value >= 0.0 && value <= nscd_restart::MAX_REACH_FRACTION))
         error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, {}] (a multiple of the "
-                   "smallest grain's bounding radius)", value, nscd_restart::kMaxReachFraction);
+                   "smallest grain's bounding radius)", value, nscd_restart::MAX_REACH_FRACTION);
       reach_given = -1.0;
       reach_fraction = value;
     }
@@ -190,9 +191,8 @@ void PairNSCD::init_style()
   reach = reach_given >= 0.0 ? reach_given : reach_fraction * smallest;
   const double largest = avec->shapes().max_bounding_radius();
   if (activation > 2.0 * largest)
-    error->all(FLERR, "pair_style nscd: activation {} is larger than the largest grain ({} across): "
-               "the neighbour lists would hold far grains; use at most {}", activation,
-               2.0 * largest, 2.0 * largest);
+    error->all(FLERR, "pair_style nscd: activation {} is larger than the largest grain "
+               "({} across); use at most {}", activation, 2.0 * largest, 2.0 * largest);
   if (reach > 20.0 * largest)
     error->all(FLERR, "pair_style nscd: reach {} is more than 10 grains ({} across): lower the "
                "timestep instead", reach, 2.0 * largest);
@@ -200,10 +200,9 @@ void PairNSCD::init_style()
   neighbor->add_request(this);
   // Contacts are found from the neighbour list every step: a stale list misses them.
   if ((neighbor->delay > 0 || neighbor->every > 1 || !neighbor->dist_check) && comm->me == 0)
-    error->warning(FLERR, "pair_style nscd: the neighbour list may be rebuilt too late "
-                   "(neigh_modify every {} delay {} check {}); contacts can be missed. Use "
-                   "'neigh_modify every 1 delay 0 check yes'", neighbor->every, neighbor->delay,
-                   neighbor->dist_check ? "yes" : "no");
+    error->warning(FLERR, "pair_style nscd: neigh_modify every {} delay {} check {} can miss contacts; use 'every "
+                   "1 delay 0 check yes'",
+                   neighbor->every, neighbor->delay, neighbor->dist_check ? "yes" : "no");
 }
 
 /* A grain wider than a periodic box touches its own image: a rigid body cannot. The widths
@@ -224,10 +223,8 @@ void PairNSCD::check_periodic_box_holds_grains()
     const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
     const double width = volume / std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
     if (width < 2.0 * widest + activation)
-      error->all(FLERR, "pair_style nscd: the periodic box is {:.6g} wide in {}, but a grain is up "
-                 "to {:.6g} across (plus the activation distance {:.6g}): it would touch its own "
-                 "image. Make the box wider or the boundary non-periodic", width, names[d],
-                 2.0 * widest, activation);
+      error->all(FLERR, "pair_style nscd: the periodic box is {:.6g} wide in {}, a grain up to "
+                 "{:.6g} across; see doc/pair_nscd.md, Errors", width, names[d], 2.0 * widest);
   }
 }
 

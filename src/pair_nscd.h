@@ -68,14 +68,14 @@ class PairNSCD : public Pair {
   double reach_distance() const { return reach; }
 
  protected:
-  double activation_given = -1.0;    // from `activation D`; < 0: use the fraction
-  double activation_fraction = 0.1;  // of the smallest bounding radius in the library
-  double activation = 0.0;           // in use, set by init_style()
-  double reach_given = -1.0;         // from `reach D`; < 0: use reach_fraction
-  double reach_fraction = 0.5;       // of the smallest bounding radius in the library
-  double reach = 0.0;                // in use, set by init_style()
-  double **mu = nullptr, **restitution_coeff = nullptr;
-  class AtomVecSpheropolyhedron *avec = nullptr;
+  double activation_given;           // from `activation D`; < 0: use the fraction
+  double activation_fraction;        // of the smallest bounding radius in the library
+  double activation;                 // in use, set by init_style()
+  double reach_given;                // from `reach D`; < 0: use reach_fraction
+  double reach_fraction;             // of the smallest bounding radius in the library
+  double reach;                      // in use, set by init_style()
+  double **mu, **restitution_coeff;
+  class AtomVecSpheropolyhedron *avec;
   // The contacts of the last compute() and the geometry's scratch space, behind a pointer:
   // style_pair.h pulls this header into LAMMPS' core, which need not compile lib/ and Eigen.
   struct Found;

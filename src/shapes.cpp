@@ -63,8 +63,8 @@ void Shapes::broadcast(std::string &text)
   bigint size = (bigint) text.size();
   MPI_Bcast(&size, 1, MPI_LMP_BIGINT, 0, world);
   if (size > INT_MAX)    // one MPI message, and the restart file stores it as one string
-    error->all(FLERR, "shapes: the shape library is too large to send ({} bytes); use fewer "
-               "or simpler shapes (fewer vertices), or reuse shapes for many grains", size);
+    error->all(FLERR, "shapes: the shape library is too large to send ({} "
+               "bytes); use fewer or simpler shapes, or reuse shapes", size);
   const int n = (int) size;
   text.resize(n);
   MPI_Bcast(&text[0], n, MPI_CHAR, 0, world);
@@ -103,15 +103,15 @@ void Shapes::read(int narg, char **arg)
 void Shapes::random(int narg, char **arg)
 {
   if (narg < 3 || strcmp(arg[1], "seed") != 0)
-    error->all(FLERR, "Illegal shapes random command: expected 'shapes random N seed SEED "
-               "[vertices NMIN NMAX] [size DMIN DMAX] [axes B/A C/A] [radius R]'");
+    error->all(FLERR, "Illegal shapes random command: expected "
+               "'shapes random N seed SEED [keyword values ...]'");
   const bigint requested = nscd_args::whole(lmp, "shapes random", "count", arg[0]);
   const bigint seed = nscd_args::whole(lmp, "shapes random", "seed", arg[2]);
   const int room = nscd::ShapeLibrary::kMaxShapes - avec->shapes().size();
   if (requested < 1 || requested > room)
-    error->all(FLERR, "shapes random: count {} must be between 1 and {} (a library holds at most "
-               "{} shapes, {} are loaded); reuse shapes for many grains with 'shapes assign ... "
-               "shape random'", requested, room, nscd::ShapeLibrary::kMaxShapes, avec->shapes().size());
+    error->all(FLERR, "shapes random: count {} must be between 1 and {} ({} shapes at most, {} loaded); reuse "
+               "shapes ('shapes assign')",
+               requested, room, nscd::ShapeLibrary::kMaxShapes, avec->shapes().size());
   const int count = (int) requested;
   nscd::RandomGrainParams params;
   for (int iarg = 3; iarg < narg;) {
@@ -286,8 +286,8 @@ void Shapes::assign(int narg, char **arg)
     }
   }
   if (shape_mode != KEEP && (shape_lo < 0 || shape_hi > nshapes || shape_lo > shape_hi))
-    error->all(FLERR, "shapes assign: shape ids {}..{} are outside the library's 0..{} (load "
-               "shapes first with 'shapes read' or 'shapes random')", shape_lo, shape_hi, nshapes);
+    error->all(FLERR, "shapes assign: shape ids {}..{} are outside the library's 0..{}; load "
+               "shapes with 'shapes read' or 'shapes random'", shape_lo, shape_hi, nshapes);
   if (density > 0.0 && mass > 0.0)
     error->all(FLERR, "shapes assign: give density or mass, not both");
   check_mass_properties(shape_mode == KEEP ? 1 : std::max(shape_lo, 1),

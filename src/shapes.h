@@ -34,11 +34,11 @@ class AtomVecSpheropolyhedron;
 
 class Shapes : public Command {
  public:
-  Shapes(class LAMMPS *lmp) : Command(lmp) {}
+  Shapes(class LAMMPS *lmp) : Command(lmp), avec(nullptr) {}
   void command(int, char **) override;
 
  private:
-  AtomVecSpheropolyhedron *avec = nullptr;
+  AtomVecSpheropolyhedron *avec;
 
   void read(int, char **);
   void random(int, char **);

@@ -58,7 +58,7 @@ inline void check(const SolverBlock &b, const std::uint8_t *data, std::size_t si
     for (double x : r.impulse)
       if (!std::isfinite(x)) violated("accepted impulse is not finite");
   }
-  if (b.format == kSolverFormat) expect_written_back(solver_block(b), data, size);    // format 3 is written as 4
+  if (b.format == SOLVER_FORMAT) expect_written_back(solver_block(b), data, size);    // format 3 is written as 4
 }
 
 inline void check(const WireBlock &b, const std::uint8_t *data, std::size_t size)
@@ -76,14 +76,14 @@ inline void check(const WireBlock &b, const std::uint8_t *data, std::size_t size
         if (!std::isfinite(x)) violated("accepted spring is not finite");
     }
   }
-  if (b.format == kWireFormat) expect_written_back(wire_block(b), data, size);    // format 3 is written as 4
+  if (b.format == WIRE_FORMAT) expect_written_back(wire_block(b), data, size);    // format 3 is written as 4
 }
 
 inline void check(const WallBlock &b, const std::uint8_t *data, std::size_t size)
 {
   for (double x : b.point)
     if (!std::isfinite(x)) violated("accepted wall position is not finite");
-  if (b.format == kWallFormat) expect_written_back(wall_block(b), data, size);
+  if (b.format == WALL_FORMAT) expect_written_back(wall_block(b), data, size);
 }
 
 inline void check(const PlateBlock &b, const std::uint8_t *data, std::size_t size)
@@ -91,7 +91,7 @@ inline void check(const PlateBlock &b, const std::uint8_t *data, std::size_t siz
   for (double x : {b.z, b.vz, b.elapsed, b.z_start})
     if (!std::isfinite(x)) violated("accepted plate value is not finite");
   if (b.elapsed < 0.0) violated("accepted negative loading time");
-  if (b.format == kPlateFormat) expect_written_back(plate_block(b), data, size);
+  if (b.format == PLATE_FORMAT) expect_written_back(plate_block(b), data, size);
 }
 
 template <class Block> bool same_contents(const Block &a, const Block &b, std::string (*write)(const Block &))
@@ -114,22 +114,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
 #if NSCD_RESTART_BLOCK == 1
     const SolverBlock b = read_solver_block(block, size);
     check(b, data, size);
-    if (b.read && !same_contents(b, read_solver_block(block, kUnknownSize), solver_block))
+    if (b.read && !same_contents(b, read_solver_block(block, UNKNOWN_SIZE), solver_block))
       violated("the block reads differently without its size");
 #elif NSCD_RESTART_BLOCK == 2
     const WireBlock b = read_wire_block(block, size);
     check(b, data, size);
-    if (b.memories_read && !same_contents(b, read_wire_block(block, kUnknownSize), wire_block))
+    if (b.memories_read && !same_contents(b, read_wire_block(block, UNKNOWN_SIZE), wire_block))
       violated("the block reads differently without its size");
 #elif NSCD_RESTART_BLOCK == 3
     const WallBlock b = read_wall_block(block, size);
     check(b, data, size);
-    if (!same_contents(b, read_wall_block(block, kUnknownSize), wall_block))
+    if (!same_contents(b, read_wall_block(block, UNKNOWN_SIZE), wall_block))
       violated("the block reads differently without its size");
 #elif NSCD_RESTART_BLOCK == 4
     const PlateBlock b = read_plate_block(block, size);
     check(b, data, size);
-    if (!same_contents(b, read_plate_block(block, kUnknownSize), plate_block))
+    if (!same_contents(b, read_plate_block(block, UNKNOWN_SIZE), plate_block))
       violated("the block reads differently without its size");
 #else
 #error "NSCD_RESTART_BLOCK must be 1 (fix nscd), 2 (fix wire), 3 (wall) or 4 (plate)"

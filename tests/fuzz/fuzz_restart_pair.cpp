@@ -41,9 +41,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const PairSettings s = read_pair_settings(in);
     if (s.activation_given != -1.0 && !(s.activation_given >= 0.0 && std::isfinite(s.activation_given)))
       violated("accepted activation is neither -1 nor a finite distance");
-    if (!(s.activation_fraction >= 0.0 && s.activation_fraction <= kMaxActivationFraction))
+    if (!(s.activation_fraction >= 0.0 && s.activation_fraction <= MAX_ACTIVATION_FRACTION))
       violated("accepted activation fraction out of range");
-    if (!(s.reach_fraction >= 0.0 && s.reach_fraction <= kMaxReachFraction)) violated("accepted reach fraction out of range");
+    if (!(s.reach_fraction >= 0.0 && s.reach_fraction <= MAX_REACH_FRACTION)) violated("accepted reach fraction out of range");
     written = pair_settings_bytes(s);
     for (int i = 1; i <= ntypes; i++)
       for (int j = i; j <= ntypes; j++) {

@@ -391,7 +391,7 @@ TEST_F(AnalysisTest, BadKeywordsAreNamed)
   scene(0.5);
   EXPECT_NE(error_of("compute f all fabric/atom contacts some").find("'contacts some'"), std::string::npos);
   EXPECT_NE(error_of("compute f all fabric/atom boundaries").find("needs a value"), std::string::npos);
-  EXPECT_NE(error_of("compute f all fabric/atom wire yes").find("never wire-grain ones"), std::string::npos);
+  EXPECT_NE(error_of("compute f all fabric/atom wire yes").find("the fabric has no wire-grain contacts"), std::string::npos);
   EXPECT_NE(error_of("compute f all fabric/atom wire no").find("'wire no'"), std::string::npos);
   EXPECT_NE(error_of("compute c all nscd/contacts pair").find("unknown keyword 'pair'"), std::string::npos);
   EXPECT_NE(error_of("compute o all nscd/overlap/atom deep").find("takes no keywords, got 'deep'"),

@@ -1184,11 +1184,10 @@ TEST_F(CrossingWiresTest, MotionBeyondTheSkinWithinAStepIsCountedAndWarned)
   if (rank() == 0) {
     std::ifstream in(log);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("fix wire: at step 1 a wire node moved 0.59"), std::string::npos) << text;
-    EXPECT_NE(text.find("the neighbour skin 0.3: contacts with atoms beyond the ghost cutoff can be missed"),
-              std::string::npos) << text;
-    EXPECT_NE(text.find("larger skin ('neighbor 2.3"), std::string::npos) << text;    // 2 x (0.6 + 0.6)
-    EXPECT_EQ(text.find("at step 2"), std::string::npos) << "warned twice";
+    EXPECT_NE(text.find("fix wire: step 1: a node moved 0.59"), std::string::npos) << text;
+    EXPECT_NE(text.find(": over the skin 0.3; lower the timestep"), std::string::npos) << text;
+    EXPECT_NE(text.find("or use neighbor 2.3"), std::string::npos) << text;    // 2 x (0.6 + 0.6)
+    EXPECT_EQ(text.find("fix wire: step 2:"), std::string::npos) << "warned twice";
   }
   commands({"velocity wire set 0 0 0", "run 10"});
   EXPECT_EQ(fix_value("w", 12), 0.0);
