@@ -23,6 +23,7 @@
 #include "error.h"
 #include "update.h"
 
+#include "math/capacity_bytes.h"
 #include "shape/shape_library.h"
 
 #include <cmath>
@@ -199,4 +200,15 @@ void DumpGrainsVTK::write_file()
     for (size_t k = 0; k < n; k++) fmt::print(fp, "{:.9g} {:.9g} {:.9g}\n", row[VX], row[VY], row[VZ]);
   }
   snapshot.clear();
+}
+
+// LAMMPS' buffers, the gathered rows and the display meshes of the shapes seen.
+double DumpGrainsVTK::memory_usage()
+{
+  double bytes = Dump::memory_usage() + (double) nscd::capacity_bytes(snapshot);
+  for (const auto &m : meshes) {
+    bytes += (double) (sizeof(m) + nscd::capacity_bytes(m.second.points) + nscd::capacity_bytes(m.second.polygons));
+    for (const auto &polygon : m.second.polygons) bytes += (double) nscd::capacity_bytes(polygon);
+  }
+  return bytes;
 }

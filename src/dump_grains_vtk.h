@@ -41,6 +41,7 @@ class DumpGrainsVTK : public Dump {
   void write_header(bigint) override;
   void pack(tagint *) override;
   void write_data(int, double *) override;
+  double memory_usage() override;
 
  private:
   struct Mesh {    // a shape's surface for display, body frame

@@ -321,3 +321,9 @@ void FixNSCDPlate::restart(char *bytes)
   plate->elapsed = block.elapsed;
   plate->z_start = block.z_start;
 }
+
+// The plate's state and its contact queries' scratch buffers.
+double FixNSCDPlate::memory_usage()
+{
+  return (double) sizeof(Plate) + (double) plate->workspace.memory_bytes();
+}

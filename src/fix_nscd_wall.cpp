@@ -304,3 +304,9 @@ void FixNSCDWall::restart(char *bytes)
   }
   wall->reference_point() = nscd::Vec3(block.point[0], block.point[1], block.point[2]);
 }
+
+// The wall's state and its contact queries' scratch buffers.
+double FixNSCDWall::memory_usage()
+{
+  return (double) sizeof(Wall) + (double) wall->workspace.memory_bytes();
+}

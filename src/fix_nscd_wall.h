@@ -44,6 +44,7 @@ class FixNSCDWall : public Fix, public NSCDBoundaryFix {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
+  double memory_usage() override;
 
   NSCDBoundary &boundary() override;
 

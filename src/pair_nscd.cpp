@@ -415,7 +415,8 @@ void PairNSCD::stop_if_damaged(std::string problem)
 double PairNSCD::memory_usage()
 {
   const int n = atom->ntypes + 1;
-  double bytes = Pair::memory_usage() + (double) nscd::capacity_bytes(found->contacts);
+  double bytes = Pair::memory_usage() + (double) nscd::capacity_bytes(found->contacts) +
+                 (double) found->workspace.memory_bytes();
   if (allocated) bytes += 2.0 * n * n * sizeof(double) + (double) n * n * (sizeof(int) + sizeof(double));
   return bytes;
 }

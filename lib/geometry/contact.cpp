@@ -18,6 +18,7 @@
 #include "geometry/core_contact.h"
 #include "geometry/feature_key.h"
 #include "geometry/segment_closest.h"
+#include "math/capacity_bytes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -443,6 +444,15 @@ std::optional<SegmentContact> contact_segments(const Segment &segment_i,
   };
   out.key = make_key(end_feature(c.s), end_feature(c.t));
   return out;
+}
+
+std::size_t ContactWorkspace::memory_bytes() const
+{
+  return capacity_bytes(vertices_i) + capacity_bytes(vertices_j) + capacity_bytes(normals_i) +
+         capacity_bytes(normals_j) + capacity_bytes(offsets_i) + capacity_bytes(offsets_j) + capacity_bytes(polygon) +
+         capacity_bytes(clipped) + capacity_bytes(candidates) + capacity_bytes(arcs_i) + capacity_bytes(arcs_j) +
+         capacity_bytes(edges_near_i) + capacity_bytes(edges_near_j) + capacity_bytes(marks_ref) +
+         capacity_bytes(marks_inc) + capacity_bytes(near_faces);
 }
 
 }    // namespace nscd

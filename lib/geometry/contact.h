@@ -34,6 +34,7 @@
 #include "shape/spheropolyhedron.h"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -159,6 +160,9 @@ class ContactWorkspace {
   std::vector<int> edges_near_i, edges_near_j;  // edges close enough to the other core
   std::vector<char> marks_ref, marks_inc;       // vertices of the closest features
   std::vector<int> near_faces;                  // faces through them
+
+  // Bytes its buffers hold (their capacities), for the LAMMPS styles' memory_usage().
+  std::size_t memory_bytes() const;
 };
 
 // Two grains i and j. Returns the contact points with gap <= activation (maybe none).

@@ -82,6 +82,22 @@ TEST(ContactGrains, BeyondActivationNothing)
   EXPECT_TRUE(contact_grains(box, place(box, Vec3(10, 0, 0)), box, place(box, Vec3::Zero()), 0.1, ws).empty());
 }
 
+// The workspace's buffers grow to the shapes seen and are then reused: what memory_usage()
+// reports is 0 before any query, at least the two boxes' core vertices after one, and the
+// same after the same query again (no growth, no allocation).
+TEST(ContactGrains, WorkspaceReportsItsBuffersAndStopsGrowing)
+{
+  const auto box = make_box(1, 1, 1, 0.1);
+  ContactWorkspace ws;
+  EXPECT_EQ(ws.memory_bytes(), 0u);
+  contact_grains(box, place(box, Vec3(0, 0, 2.2)), box, place(box, Vec3::Zero()), 0.1, ws);
+  const std::size_t after_one = ws.memory_bytes();
+  EXPECT_GE(after_one, 2 * 8 * sizeof(Vec3));
+  EXPECT_GE(after_one, ws.vertices_i.capacity() * sizeof(Vec3) + ws.candidates.capacity() * sizeof(ws.candidates[0]));
+  contact_grains(box, place(box, Vec3(0, 0, 2.2)), box, place(box, Vec3::Zero()), 0.1, ws);
+  EXPECT_EQ(ws.memory_bytes(), after_one);
+}
+
 // Sharp boxes whose cores overlap: the separating-axis search gives the exact depth.
 TEST(ContactGrains, OverlappingSharpCoresUseTheMinimumPenetrationAxis)
 {
