@@ -1,0 +1,89 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   NSCD package for LAMMPS: Non-Smooth Contact Dynamics of rigid
+   spheropolyhedra coupled to elastic wires.
+
+   Copyright (2026) the NSCD package developers. This software is
+   distributed under the GNU General Public License, version 2, the
+   licence of LAMMPS. See the LICENSE file in the top-level directory
+   of the package.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: the NSCD package developers
+------------------------------------------------------------------------- */
+
+/* An exchange of copies of a few kinds of atom (fix wire: the wire nodes) straight between the
+   ranks that own them and the ranks that hold them as ghosts: one message per pair of ranks
+   and direction, holding those copies only. LAMMPS' comm->forward_comm / reverse_comm of a
+   fix walk its swaps (6 on a brick, each rank in turn, ghosts of ghosts relayed) over every
+   ghost atom, grains too, and send a message per swap that has any ghost atom, wire node or
+   not; fix wire exchanged its nodes that way twice per wire substep (doc/fix_wire.md, "Speed").
+
+   The plan is made after each neighbour build from where each copy comes from (its owner
+   rank and the item's index there, which the caller learns with one LAMMPS forward_comm),
+   and the shift of its periodic image, which stays with the copy. Owned items and copies are
+   numbered by the caller (fix wire: its node index; the copies after the owned ones). A copy
+   held on its own owner's rank (a periodic image) is filled without a message. */
+#ifndef LMP_NSCD_COPY_EXCHANGE_H
+#define LMP_NSCD_COPY_EXCHANGE_H
+
+#include "nscd_comm_count.h"
+
+#include <mpi.h>
+
+#include <array>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class NSCDCopyExchange {
+ public:
+  // Where copy c (0 .. copies-1) comes from: the owner's rank, the item's index there and the
+  // periodic shift of this image (added to the first 3 values of a forward exchange).
+  struct Origin {
+    int rank, index;
+    std::array<double, 3> shift;
+  };
+
+  // Collective over `world`: each rank tells the owners which of their items it holds copies
+  // of (a count to every rank, then one list to each owner). `counts`: the plan's messages
+  // are counted there as `kind`.
+  void plan(const std::vector<Origin> &origins, MPI_Comm world, NSCDCommCount &counts, int kind);
+
+  // Forward: each copy's values set to its owner's item's, with the shift added to the first
+  // field (a position). `fields`: arrays of 3 doubles per item, the owned items first and the
+  // copies from `first_copy` on, the same numbering on every rank. Returns the doubles packed
+  // (copies on this rank too).
+  double forward(const std::vector<double *> &fields, int first_copy, NSCDCommCount &counts, int kind);
+  // Reverse: each copy's 3 values added to its owner's item (a force). Returns the doubles packed.
+  double reverse(double *field, int first_copy, NSCDCommCount &counts, int kind);
+
+  // Ranks this rank exchanges with (messages received per exchange), and the copies it holds.
+  int peers() const { return (int) owners.size(); }
+  int copies() const { return (int) origins_.size(); }
+
+ private:
+  // Another rank: the items sent to it (owned indices: `owners`) or the copies received
+  // from it (copy indices: `holders`), in the order of the messages.
+  struct Peer {
+    int rank;
+    std::vector<int> items;
+    std::vector<double> buffer;
+  };
+  std::vector<Peer> owners, holders;       // ranks owning copies held here; ranks holding copies of ours
+  std::vector<std::array<int, 2>> self;    // (owned index, copy index) of images on this rank
+  std::vector<Origin> origins_;
+  std::vector<MPI_Request> requests;
+  std::vector<double> scratch;
+  MPI_Comm world_ = MPI_COMM_NULL;
+  static constexpr int kForwardTag = 24601, kReverseTag = 24602, kPlanTag = 24603;
+
+  // Receives `width` doubles per item from each peer into its buffer, sends each of `to`'s
+  // buffers, waits for all, and counts what arrived.
+  void swap_buffers(std::vector<Peer> &from, std::vector<Peer> &to, int width, int tag, NSCDCommCount &counts,
+                    int kind);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
