@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
 
 using namespace LAMMPS_NS;
 
@@ -48,18 +49,22 @@ void NSCDCopyExchange::plan(const std::vector<Origin> &origins, MPI_Comm world, 
   for (int r = 0; r < nprocs; r++)
     if (asked[r] > 0 && r != me) holders.push_back({r, std::vector<int>(asked[r]), {}});
 
-  // the owners' indices of the wanted copies, as ints
+  // the owners' indices of the wanted copies, as doubles (counted like the other messages)
   requests.assign(owners.size() + holders.size(), MPI_REQUEST_NULL);
-  std::vector<std::vector<int>> lists(owners.size());
-  for (size_t p = 0; p < holders.size(); p++)
-    MPI_Irecv(holders[p].items.data(), (int) holders[p].items.size(), MPI_INT, holders[p].rank, kPlanTag, world,
+  for (size_t p = 0; p < holders.size(); p++) {
+    holders[p].buffer.resize(holders[p].items.size());
+    MPI_Irecv(holders[p].buffer.data(), (int) holders[p].buffer.size(), MPI_DOUBLE, holders[p].rank, kPlanTag, world,
               &requests[p]);
+  }
   for (size_t p = 0; p < owners.size(); p++) {
-    for (int c : owners[p].items) lists[p].push_back(origins[c].index);
-    MPI_Isend(lists[p].data(), (int) lists[p].size(), MPI_INT, owners[p].rank, kPlanTag, world,
+    owners[p].buffer.clear();
+    for (int c : owners[p].items) owners[p].buffer.push_back(origins[c].index);
+    MPI_Isend(owners[p].buffer.data(), (int) owners[p].buffer.size(), MPI_DOUBLE, owners[p].rank, kPlanTag, world,
               &requests[holders.size() + p]);
   }
   MPI_Waitall((int) requests.size(), requests.data(), MPI_STATUSES_IGNORE);
+  for (Peer &h : holders)
+    for (size_t k = 0; k < h.items.size(); k++) h.items[k] = (int) h.buffer[k];
   for (const Peer &h : holders) counts.received(kind, (int) h.items.size(), (int) h.items.size());
 }
 
@@ -79,35 +84,36 @@ void NSCDCopyExchange::swap_buffers(std::vector<Peer> &from, std::vector<Peer> &
   for (const Peer &f : from) counts.received(kind, (int) f.items.size(), (int) f.buffer.size());
 }
 
-/* Each field: 3 doubles per item, the owned items first and the copies from `first_copy` on. */
+/* Each field: 3 doubles per item, the owned items first and the copies from `first_copy` on.
+   (Plain loops over 3 doubles: this runs twice per wire substep.) */
 double NSCDCopyExchange::forward(const std::vector<double *> &fields, int first_copy, NSCDCommCount &counts, int kind)
 {
-  const int width = 3 * (int) fields.size();
-  auto pack = [&](int i, double *b) {
-    for (double *field : fields) b = std::copy(field + 3 * (size_t) i, field + 3 * (size_t) i + 3, b);
-  };
+  const int nf = (int) fields.size(), width = 3 * nf;
+  double *const *field = fields.data();
   double packed = 0.0;
   for (Peer &h : holders) {
     h.buffer.resize((size_t) width * h.items.size());
-    for (size_t k = 0; k < h.items.size(); k++) pack(h.items[k], &h.buffer[(size_t) width * k]);
+    double *b = h.buffer.data();
+    for (int i : h.items)
+      for (int f = 0; f < nf; f++, b += 3) std::copy(field[f] + 3 * (size_t) i, field[f] + 3 * (size_t) i + 3, b);
     packed += (double) h.buffer.size();
   }
   swap_buffers(owners, holders, width, kForwardTag, counts, kind);
-  // a copy is its owner's item, the first field (a position) at the copy's periodic image
-  auto place = [&](const double *value, int c) {
-    for (size_t f = 0; f < fields.size(); f++)
-      for (int d = 0; d < 3; d++)
-        fields[f][3 * ((size_t) first_copy + c) + d] = value[3 * f + d] + (f == 0 ? origins_[c].shift[d] : 0.0);
+  // a copy is its owner's item, the first field (a position) at the copy's periodic image;
+  // `value(f)`: the item's 3 values of field f
+  auto place = [&](int c, auto value) {
+    const double *shift = origins_[c].shift.data(), *x = value(0);
+    double *copy = field[0] + 3 * ((size_t) first_copy + c);
+    for (int d = 0; d < 3; d++) copy[d] = x[d] + shift[d];
+    for (int f = 1; f < nf; f++) std::copy(value(f), value(f) + 3, field[f] + 3 * ((size_t) first_copy + c));
   };
-  std::vector<double> &item = scratch;
-  item.resize(width);
-  for (const std::array<int, 2> &s : self) {
-    pack(s[0], item.data());
-    place(item.data(), s[1]);
-  }
+  for (const std::array<int, 2> &s : self) place(s[1], [&](int f) { return field[f] + 3 * (size_t) s[0]; });
   packed += (double) width * self.size();
   for (const Peer &o : owners)
-    for (size_t k = 0; k < o.items.size(); k++) place(&o.buffer[(size_t) width * k], o.items[k]);
+    for (size_t k = 0; k < o.items.size(); k++) {
+      const double *b = &o.buffer[(size_t) width * k];
+      place(o.items[k], [&](int f) { return b + 3 * f; });
+    }
   return packed;
 }
 

@@ -74,7 +74,6 @@ class NSCDCopyExchange {
   std::vector<std::array<int, 2>> self;    // (owned index, copy index) of images on this rank
   std::vector<Origin> origins_;
   std::vector<MPI_Request> requests;
-  std::vector<double> scratch;
   MPI_Comm world_ = MPI_COMM_NULL;
   static constexpr int kForwardTag = 24601, kReverseTag = 24602, kPlanTag = 24603;
 
