@@ -350,8 +350,8 @@ size_t FixWire::wire_memories_of_other_ranks() const
 }
 
 /* The per-atom Gear states, the atom indices, the node arrays of the subcycle, the
-   topology, the grain force buffer and the contact model (candidates, records, memories),
-   at capacity. */
+   topology, the grain force buffer, the exchange of node copies and the contact model
+   (candidates, records, memories), at capacity. */
 double FixWire::memory_usage()
 {
   using nscd::capacity_bytes;
@@ -360,7 +360,8 @@ double FixWire::memory_usage()
       capacity_bytes(elements) + capacity_bytes(grain_force_buffer) + capacity_bytes(nodes.state) +
       capacity_bytes(nodes.mass) + capacity_bytes(nodes.fixed) + capacity_bytes(nodes.positions) +
       capacity_bytes(nodes.velocities) + capacity_bytes(nodes.forces) + capacity_bytes(lib->step.external) +
-      capacity_bytes(lib->step_start) + lib->atom_memories.memory_bytes();
+      capacity_bytes(lib->step_start) + lib->atom_memories.memory_bytes() + capacity_bytes(origin_buffer) +
+      node_copies.memory_bytes();
   for (const auto &r : nodes.arrays.r) bytes += capacity_bytes(r);
   if (lib->contacts) bytes += lib->contacts->memory_bytes();
   return (double) atom->nmax * kGearColumns * sizeof(double) + (double) bytes;

@@ -137,3 +137,12 @@ double NSCDCopyExchange::reverse(double *field, int first_copy, NSCDCommCount &c
     for (size_t k = 0; k < h.items.size(); k++) add(&h.buffer[3 * k], h.items[k]);
   return packed;
 }
+
+std::size_t NSCDCopyExchange::memory_bytes() const
+{
+  std::size_t bytes = self.capacity() * sizeof(self[0]) + origins_.capacity() * sizeof(Origin) +
+      requests.capacity() * sizeof(MPI_Request) + (owners.capacity() + holders.capacity()) * sizeof(Peer);
+  for (const std::vector<Peer> *peers : {&owners, &holders})
+    for (const Peer &p : *peers) bytes += p.items.capacity() * sizeof(int) + p.buffer.capacity() * sizeof(double);
+  return bytes;
+}

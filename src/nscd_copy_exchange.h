@@ -32,6 +32,7 @@
 #include <mpi.h>
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -46,25 +47,25 @@ class NSCDCopyExchange {
   };
 
   // Collective over `world`: each rank tells the owners which of their items it holds copies
-  // of (a count to every rank, then one list to each owner). `counts`: the plan's messages
-  // are counted there as `kind`.
+  // of (a count to every rank, then one list to each owner, 1 double per copy). `counts`:
+  // those lists are counted there as `kind` (the MPI_Alltoall is not).
   void plan(const std::vector<Origin> &origins, MPI_Comm world, NSCDCommCount &counts, int kind);
 
   // Forward: each copy's values set to its owner's item's, with the shift added to the first
-  // field (a position). `fields`: arrays of 3 doubles per item, the owned items first and the
-  // copies from `first_copy` on, the same numbering on every rank. Returns the doubles packed
-  // (copies on this rank too).
+  // field (a position). `fields`: arrays of 3 doubles per item, this rank's own items first
+  // (numbered as the indices of the plan's Origins) and its copies from `first_copy` on.
+  // Returns the doubles packed (copies on this rank too).
   double forward(const std::vector<double *> &fields, int first_copy, NSCDCommCount &counts, int kind);
   // Reverse: each copy's 3 values added to its owner's item (a force). Returns the doubles packed.
   double reverse(double *field, int first_copy, NSCDCommCount &counts, int kind);
 
-  // Ranks this rank exchanges with (messages received per exchange), and the copies it holds.
-  int peers() const { return (int) owners.size(); }
-  int copies() const { return (int) origins_.size(); }
+  // Bytes held: the plan and the message buffers, at capacity.
+  std::size_t memory_bytes() const;
 
  private:
-  // Another rank: the items sent to it (owned indices: `owners`) or the copies received
-  // from it (copy indices: `holders`), in the order of the messages.
+  // Another rank and the items of the messages with it, in their order: for a rank holding
+  // copies of ours (`holders`) our items it holds, for a rank owning copies held here
+  // (`owners`) those copies.
   struct Peer {
     int rank;
     std::vector<int> items;
