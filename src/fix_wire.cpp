@@ -611,7 +611,10 @@ void FixWire::post_force(int /*vflag*/)
   const double wall_start = platform::walltime(), cpu_start = platform::cputime();
   check_element_tensions();
   const bool reindexed = neighbor->lastcall != indexed_at;
-  if (reindexed) index_atoms();
+  if (reindexed) {
+    index_atoms();
+    plan_copy_exchange();
+  }
   if (topology_changed && reindexed) {    // this step's neighbour build dropped the broken elements
     gather_elements();
     topology_changed = false;

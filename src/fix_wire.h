@@ -32,6 +32,7 @@ FixStyle(wire,FixWire);
 
 #include "fix.h"
 #include "nscd_comm_count.h"
+#include "nscd_copy_exchange.h"
 
 #include <array>
 #include <cstdio>
@@ -158,11 +159,18 @@ class FixWire : public Fix {
   std::vector<std::array<tagint, 2>> elements;
   double longest_element;
 
-  enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force } comm_mode;
+  enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force, node_origin } comm_mode;
   bool counting_comm;                        // the subcycle's communication: counted
   NSCDCommCount comm_counts;
   std::array<double, 2> migrated;            // memories packed with migrating atoms, their doubles
   std::vector<double> grain_force_buffer;    // 6 per local atom
+  // The subcycle's exchange of node copies on several ranks (one rank: LAMMPS' comm, which
+  // only copies within the rank there): planned after each neighbour build from each ghost
+  // node's origin (shift of its image; owner rank, owner's node index, 0), 6 per local atom.
+  NSCDCopyExchange node_copies;
+  std::vector<double> origin_buffer;
+  bool direct_exchange() const;
+  void plan_copy_exchange();
 
   std::array<double, 16> diagnostics;
   static constexpr int BROKEN_DIAGNOSTIC = 13;    // elements broken so far (option strength)
@@ -219,6 +227,7 @@ class FixWire : public Fix {
   void check_motion_within_skin();
   void hand_forces();
   void communicate(Comm mode, bool reverse, bool counted = false);
+  void exchange_copies(bool reverse);
   std::string communication_report() const;
   int comm_fields(int i, double *field[2]);
 };

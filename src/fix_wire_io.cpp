@@ -56,6 +56,46 @@ void FixWire::communicate(Comm mode, bool reverse, bool counted)
   if (!counted) timing[T_COMM_STEP] += platform::walltime() - t0;
 }
 
+/* The subcycle's exchange of node copies: on several ranks straight between the ranks that
+   own and hold the copies (nscd_copy_exchange.h), on one rank through LAMMPS' comm (periodic
+   images only; it keeps one rank's trajectory to the last bit as it was). The doubles a
+   LAMMPS exchange of 6 + 3 per ghost atom of any kind would carry are counted for the report. */
+void FixWire::exchange_copies(bool reverse)
+{
+  if (!direct_exchange()) return communicate(reverse ? Comm::node_force : Comm::node_state, reverse, true);
+  wire::WireNodeSet &nodes = lib->step.nodes;
+  auto flat = [](std::vector<Vec3> &v) { return v.empty() ? nullptr : v[0].data(); };    // 3 doubles a node
+  if (reverse) timing[T_SENT] += node_copies.reverse(flat(nodes.forces), owned_nodes, comm_counts, COMM_SUBSTEP);
+  else
+    timing[T_SENT] += node_copies.forward({flat(nodes.positions), flat(nodes.velocities)}, owned_nodes, comm_counts,
+                                          COMM_SUBSTEP);
+  timing[T_SENT_ALL_ATOMS] += (reverse ? 3.0 : 6.0) * atom->nghost;
+}
+
+bool FixWire::direct_exchange() const { return comm->nprocs > 1; }
+
+/* After a neighbour build on several ranks: each ghost node learns its owner's rank and node
+   index and the shift of its image (one LAMMPS forward_comm, which relays ghosts of ghosts
+   and adds up their shifts as it does for positions), and the exchange is planned from them. */
+void FixWire::plan_copy_exchange()
+{
+  if (!direct_exchange()) return;
+  const int nall = atom->nlocal + atom->nghost;
+  origin_buffer.assign(6 * (size_t) nall, 0.0);
+  for (int k = 0; k < owned_nodes; k++) {
+    double *o = &origin_buffer[6 * (size_t) atom_of_node[k]];
+    o[3] = comm->me;
+    o[4] = k;
+  }
+  communicate(Comm::node_origin, false);
+  std::vector<NSCDCopyExchange::Origin> origins;
+  for (size_t k = owned_nodes; k < atom_of_node.size(); k++) {
+    const double *o = &origin_buffer[6 * (size_t) atom_of_node[k]];
+    origins.push_back({(int) o[3], (int) o[4], {o[0], o[1], o[2]}});
+  }
+  node_copies.plan(origins, world, comm_counts, COMM_STEP);
+}
+
 /* What the current mode sends of atom i: up to two vectors of 3 doubles, none for atoms of
    the other kind. Each mode sends wire nodes only or grains only: both sides know from the
    shape which atoms those are. A node's first vector is its position (periodic shift). */
@@ -70,6 +110,7 @@ int FixWire::comm_fields(int i, double *field[2])
     case Comm::node_force: field[0] = nodes.forces[node].data(); return grain ? 0 : 1;
     case Comm::grain_velocity: field[0] = atom->v[i], field[1] = avec->omega[i]; return grain ? 2 : 0;
     case Comm::grain_force: field[0] = &grain_force_buffer[6 * (size_t) i], field[1] = field[0] + 3; return grain ? 2 : 0;
+    case Comm::node_origin: field[0] = &origin_buffer[6 * (size_t) i], field[1] = field[0] + 3; return grain ? 0 : 2;
   }
   return 0;
 }
@@ -307,8 +348,8 @@ size_t FixWire::wire_memories_of_other_ranks() const
 }
 
 /* The per-atom Gear states, the atom indices, the node arrays of the subcycle, the
-   topology, the grain force buffer and the contact model (candidates, records, memories),
-   at capacity. */
+   topology, the grain force buffer, the exchange of node copies and the contact model
+   (candidates, records, memories), at capacity. */
 double FixWire::memory_usage()
 {
   using nscd::capacity_bytes;
@@ -317,7 +358,8 @@ double FixWire::memory_usage()
       capacity_bytes(elements) + capacity_bytes(grain_force_buffer) + capacity_bytes(nodes.state) +
       capacity_bytes(nodes.mass) + capacity_bytes(nodes.fixed) + capacity_bytes(nodes.positions) +
       capacity_bytes(nodes.velocities) + capacity_bytes(nodes.forces) + capacity_bytes(lib->step.external) +
-      capacity_bytes(lib->step_start) + lib->atom_memories.memory_bytes();
+      capacity_bytes(lib->step_start) + lib->atom_memories.memory_bytes() + capacity_bytes(origin_buffer) +
+      node_copies.memory_bytes();
   for (const auto &r : nodes.arrays.r) bytes += capacity_bytes(r);
   if (lib->contacts) bytes += lib->contacts->memory_bytes();
   return (double) atom->nmax * GEAR_COLUMNS * sizeof(double) + (double) bytes;

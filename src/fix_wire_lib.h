@@ -58,8 +58,8 @@ struct FixWire::Lib : nscd::wire::Exchange {
   explicit Lib(FixWire *f) : fix(f) {}
   // The subcycle's communication, wire nodes only: positions and velocities to the ghost
   // copies, their forces back to the owners.
-  void share_copies(nscd::wire::WireNodeSet &) override { fix->communicate(Comm::node_state, false, true); }
-  void return_copy_forces(nscd::wire::WireNodeSet &) override { fix->communicate(Comm::node_force, true, true); }
+  void share_copies(nscd::wire::WireNodeSet &) override { fix->exchange_copies(false); }
+  void return_copy_forces(nscd::wire::WireNodeSet &) override { fix->exchange_copies(true); }
 };
 
 }    // namespace LAMMPS_NS

@@ -19,7 +19,8 @@
    unpack function in the very buffer its pack function has just filled, and a message from
    another rank in its receive buffer: an unpack from another buffer than the last pack's, for
    at least one atom, is one message. A brick swap with no atom sends none; a tiled swap's
-   zero-atom messages are not counted. Used by fix nscd and fix wire (doc/scaling.md). */
+   zero-atom messages are not counted. Used by fix nscd and fix wire (doc/scaling.md); fix
+   wire's exchange of node copies in its substeps counts its own messages (received()). */
 #ifndef LMP_NSCD_COMM_COUNT_H
 #define LMP_NSCD_COMM_COUNT_H
 
@@ -48,11 +49,17 @@ class NSCDCommCount {
   bool unpacked(int kind, int atoms, int values, const double *buffer)
   {
     if (atoms == 0 || buffer == last_packed) return false;
+    received(kind, atoms, values);
+    return true;
+  }
+  // A message from another rank of `values` doubles for `atoms` atoms, sent by the style's
+  // own exchange (nscd_copy_exchange.h), not through LAMMPS' Comm.
+  void received(int kind, int atoms, int values)
+  {
     Tally &t = tallies[kind];
     t.messages += 1.0;
     t.bytes += 8.0 * values;
     t.atoms += atoms;
-    return true;
   }
 
   const Tally &operator[](int kind) const { return tallies[kind]; }

@@ -27,6 +27,7 @@
 #include "fix_wire_lib.h"
 #include "force.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <algorithm>
@@ -1821,10 +1822,12 @@ TEST_F(WireOnBoundaryTest, InertiaScalesTheDynamicsNotTheWeight)
 // straight wire at rest along x across the cut at x = 0, in the upper half of the box (y =
 // 0.25), in a closed box: every ghost node comes from another rank, and in each substep it
 // gets its position and velocity (6 doubles) and hands back its force (3): 72 bytes per ghost
-// node, all ranks' ghost nodes counted by hand from their atoms. The messages: on 2 ranks
-// (2 x 1) each rank receives its ghosts in one message and sends their forces back in one,
-// 4 in all; on 4 ranks (2 x 2) the two upper ranks exchange in x as on 2 and each hands its
-// own and ghost nodes down in y to the empty rank below it: 8. On 1 rank no ghost, nothing.
+// node, all ranks' ghost nodes counted by hand from their atoms. The messages go straight
+// from the owners to the holders of copies and back (nscd_copy_exchange.h): on 2 ranks (2 x 1)
+// each rank receives its ghosts in one message and sends their forces back in one, 4 in all;
+// on 4 ranks (2 x 2) the two upper ranks exchange with each other as on 2 and each empty rank
+// below receives from both: 12 (LAMMPS' swaps relayed the other upper rank's nodes through the
+// one above, 8 messages in two rounds). On 1 rank no ghost, nothing.
 TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
 {
   std::vector<Point> nodes = straight_chain(21, 0.2, 0.01, -2.0);
@@ -1834,7 +1837,21 @@ TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
   const auto *fix = dynamic_cast<FixWire *>(lmp->modify->get_fix_by_id("w"));
   const std::vector<NSCDCommCount::Tally> all = fix->comm_count().summed(MPI_COMM_WORLD);
   const double ghosts = summed(lmp->atom->nghost), substeps = (double) fix->substeps();
-  const double messages = ranks() == 1 ? 0.0 : ranks() == 2 ? 4.0 : 8.0;
+  // by hand: per substep each rank receives one message from every other rank owning some of
+  // its ghost nodes (their positions and velocities) and one from every other rank holding
+  // copies of its nodes (their forces), i.e. twice the (holder, other owner) pairs
+  std::vector<int> owner_mine((size_t) lmp->atom->natoms + 1, -1), owner((size_t) lmp->atom->natoms + 1);
+  for (int i = 0; i < lmp->atom->nlocal; i++) owner_mine[lmp->atom->tag[i]] = rank();
+  MPI_Allreduce(owner_mine.data(), owner.data(), (int) owner.size(), MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  std::vector<int> sources;
+  for (int i = lmp->atom->nlocal; i < lmp->atom->nlocal + lmp->atom->nghost; i++)
+    if (owner[lmp->atom->tag[i]] != rank()) sources.push_back(owner[lmp->atom->tag[i]]);
+  std::sort(sources.begin(), sources.end());
+  const double pairs = summed((double) (std::unique(sources.begin(), sources.end()) - sources.begin()));
+  const double messages = 2.0 * pairs;
+  if (ranks() == 2) {
+    EXPECT_EQ(messages, 4.0);    // as LAMMPS' comm sent them before (doc/fix_wire.md, "Speed")
+  }
   if (rank() == 0)
     std::printf("[ INFO     ] %d ranks: %g ghost nodes, %g substeps: %g messages, %g bytes in the substeps\n",
                 ranks(), ghosts, substeps, all[FixWire::COMM_SUBSTEP].messages, all[FixWire::COMM_SUBSTEP].bytes);
@@ -1844,4 +1861,123 @@ TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
   }
   EXPECT_EQ(all[FixWire::COMM_SUBSTEP].bytes, 72.0 * ghosts * substeps);
   EXPECT_EQ(all[FixWire::COMM_SUBSTEP].messages, messages * substeps);
+}
+
+// The same scene on all ranks of this run and on rank 0 alone (its own communicator, as
+// NSCDTest.RestartWrittenOnOneRankContinuesOnAll does): a wire of kNodes nodes lying across
+// the rank cuts (x = 0; y = 0 on 4 ranks) on a floor with friction, pressed from above by a
+// slab (a grain held by fix move) that drags it along x at speed 1 over 400 steps: wire-grain
+// and wire-floor contacts with friction memories on both sides of the cuts, nodes changing
+// rank and the neighbour lists rebuilt during the run. The states and the reactions on the
+// slab and the floor must agree to round-off (the forces on a node are summed in another order
+// when its copies lie on several ranks); a copy's force lost or counted twice, or a copy at
+// the wrong periodic image, moves the wire by far more.
+class WireAcrossRanksTest : public WireOnBoundaryTest {
+ protected:
+  // The deck's atoms, shifted by `offset` along x and wrapped into the box of +-5.
+  std::vector<Point> drag_atoms(double offset) const
+  {
+    auto wrap = [](double x) { return x >= 5.0 ? x - 10.0 : x < -5.0 ? x + 10.0 : x; };
+    std::vector<Point> atoms = straight_chain(kNodes, 0.25, kMass, -1.0, kRadius - kMass / kN);
+    for (Point &p : atoms) p.y = 0.15 * p.x + 0.05, p.x = wrap(p.x + offset);
+    atoms.push_back({3.0, 3.0, 0.5, 0.5, 2, 2});                                     // a ball, far away
+    atoms.push_back({wrap(offset + 0.1), 0.0, 2.0 * kRadius + 0.5 - 0.001, 10.0, 1, 4});    // the slab, on the wire
+    return atoms;
+  }
+  std::vector<std::string> drag_deck(const std::string &data, const std::string &shapes) const
+  {
+    return {"units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array", "boundary " + boundary,
+            "processors * * 1", "shapes read " + shapes, "read_data " + data, "pair_style nscd", "pair_coeff * * 0.5",
+            "special_bonds lj 0 0 0", "bond_style wire", "bond_coeff 1 100 0.25", "angle_style wire",
+            "angle_coeff 1 0.01", "neighbor 0.3 bin", "neigh_modify every 1 delay 0 check yes",
+            "comm_modify cutoff 3.0", "timestep 0.001", "group wire id 1:" + std::to_string(kNodes),
+            "group balls type 2", "group slab id " + std::to_string(kNodes + 2),
+            "fix floor all nscd/wall plane 0 0 0 0 0 1 friction " + num(kMu),
+            "fix g wire gravity 1.0 vector 0.3 0.2 -1",
+            "fix w wire wire radius " + num(kRadius) + " k_n " + num(kN) +
+                " gamma_n 0.5 k_t 800 gamma_t 0.2 mu_s 0.9 mu_d 0.7 damp " + num(kDamp),
+            "fix solver balls nscd tolerance 1e-9 max_sweeps 500", "run 100",
+            "fix drag slab move linear 1.0 0.0 0.0", "run 400"};
+  }
+  // x, v of every atom, the wire's force on the slab (its f: fix move leaves it), the total
+  // on grains (f_w[8-10]), the floor's force, the neighbour builds of the last run (with its
+  // setup's), the memories migrated and the closed wire-grain and wire-floor contacts.
+  std::vector<double> drag_outcome(MPI_Comm world)
+  {
+    const int atoms = kNodes + 2;
+    std::vector<double> mine(6 * atoms + 3, 0.0), all(mine.size());
+    for (int i = 0; i < lmp->atom->nlocal; i++) {
+      const int k = (int) lmp->atom->tag[i] - 1;
+      for (int d = 0; d < 3; d++) mine[6 * k + d] = lmp->atom->x[i][d], mine[6 * k + 3 + d] = lmp->atom->v[i][d];
+      if (k == atoms - 1)
+        for (int d = 0; d < 3; d++) mine[6 * atoms + d] = lmp->atom->f[i][d];
+    }
+    MPI_Allreduce(mine.data(), all.data(), (int) mine.size(), MPI_DOUBLE, MPI_SUM, world);
+    for (int d = 0; d < 3; d++) all.push_back(fix_value("w", 7 + d));
+    for (int d = 0; d < 3; d++) all.push_back(fix_value("floor", d));
+    const auto *fix = dynamic_cast<FixWire *>(lmp->modify->get_fix_by_id("w"));
+    double migrated = fix->memories_migrated(), total = 0.0;
+    MPI_Allreduce(&migrated, &total, 1, MPI_DOUBLE, MPI_SUM, world);
+    all.push_back((double) lmp->neighbor->ncalls);
+    all.push_back(total);
+    all.push_back(fix_value("w", 4));    // closed wire-grain contacts
+    all.push_back(fix_value("w", 11));   // closed wire-boundary contacts
+    return all;
+  }
+  // Runs the deck on all ranks and on rank 0 alone and compares; `tolerance` on positions,
+  // velocities and forces, relative to the largest of each.
+  void expect_as_on_one_rank(double offset, double tolerance)
+  {
+    const std::string data = scratch("drag.data"), shapes = scratch("shapes");
+    write_data(data, drag_atoms(offset), kNodes, true);
+    if (rank() == 0) std::ofstream(shapes) << kShapes;
+    MPI_Barrier(MPI_COMM_WORLD);
+    commands(drag_deck(data, shapes));
+    const std::vector<double> here = drag_outcome(MPI_COMM_WORLD);
+    std::vector<double> alone_outcome(here.size(), 0.0);
+    MPI_Comm alone;
+    MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
+    if (rank() == 0) {
+      LAMMPS_NS::LAMMPS *all_ranks = lmp;
+      const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
+      lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
+      commands(drag_deck(data, shapes));
+      alone_outcome = drag_outcome(alone);
+      delete lmp;
+      lmp = all_ranks;
+      MPI_Comm_free(&alone);
+    }
+    MPI_Bcast(alone_outcome.data(), (int) alone_outcome.size(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const int atoms = kNodes + 2, n = (int) here.size();
+    double scale[3] = {0.0, 0.0, 0.0}, worst[3] = {0.0, 0.0, 0.0};    // positions, velocities, forces
+    auto part = [&](int k) { return k < 6 * atoms ? (k % 6) / 3 : 2; };
+    for (int k = 0; k < n - 4; k++) scale[part(k)] = std::max(scale[part(k)], std::fabs(alone_outcome[k]));
+    for (int k = 0; k < n - 4; k++)
+      worst[part(k)] = std::max(worst[part(k)], std::fabs(here[k] - alone_outcome[k]) / scale[part(k)]);
+    if (rank() == 0)
+      std::printf("[ INFO     ] %d ranks against 1: largest difference relative to the largest value: x %.3g, v %.3g, "
+                  "forces %.3g (slab %.6g %.6g %.6g, floor %.6g %.6g %.6g; %g neighbour builds, %g memories "
+                  "migrated, %g wire-grain and %g wire-floor contacts)\n", ranks(), worst[0], worst[1], worst[2],
+                  here[6 * atoms], here[6 * atoms + 1], here[6 * atoms + 2], here[6 * atoms + 6],
+                  here[6 * atoms + 7], here[6 * atoms + 8], here[n - 4], here[n - 3], here[n - 2], here[n - 1]);
+    for (int k = 0; k < 3; k++) EXPECT_LE(worst[k], tolerance) << "part " << k << " (x, v, forces)";
+    EXPECT_GE(here[n - 4], 2.0);    // the drag run's setup and a rebuild during it (at least)
+    EXPECT_GE(here[n - 2], 8.0);    // the slab presses on every element
+    EXPECT_EQ(here[n - 1], kNodes);
+    // the slab drags the wire over the floor, which takes mu times its normal force along x
+    EXPECT_NEAR(here[6 * atoms + 6] / -here[6 * atoms + 8], kMu, 1e-3 * kMu);
+    if (ranks() > 1) {
+      EXPECT_GT(here[n - 3], 0.0);    // memories moved with nodes changing rank
+    }
+  }
+};
+
+TEST_F(WireAcrossRanksTest, DraggedWireFollowsTheOneRankTrajectoryToRoundOff) { expect_as_on_one_rank(0.0, 1e-9); }
+
+// The same across the periodic boundary x = +-5 (a rank boundary on 2 and 4 ranks too; the
+// ghost cutoff 3 above a quarter of the box: two images of a node on one rank).
+TEST_F(WireAcrossRanksTest, DraggedWireAcrossAPeriodicBoundaryFollowsTheOneRankTrajectory)
+{
+  boundary = "p p f";
+  expect_as_on_one_rank(5.0, 1e-9);
 }
