@@ -14,6 +14,8 @@
 
 #include "nscd_copy_exchange.h"
 
+#include "math/capacity_bytes.h"
+
 #include <algorithm>
 #include <map>
 #include <utility>
@@ -140,9 +142,9 @@ double NSCDCopyExchange::reverse(double *field, int first_copy, NSCDCommCount &c
 
 std::size_t NSCDCopyExchange::memory_bytes() const
 {
-  std::size_t bytes = self.capacity() * sizeof(self[0]) + origins_.capacity() * sizeof(Origin) +
-      requests.capacity() * sizeof(MPI_Request) + (owners.capacity() + holders.capacity()) * sizeof(Peer);
+  std::size_t bytes = nscd::capacity_bytes(self) + nscd::capacity_bytes(origins_) + nscd::capacity_bytes(requests) +
+      nscd::capacity_bytes(owners) + nscd::capacity_bytes(holders);
   for (const std::vector<Peer> *peers : {&owners, &holders})
-    for (const Peer &p : *peers) bytes += p.items.capacity() * sizeof(int) + p.buffer.capacity() * sizeof(double);
+    for (const Peer &p : *peers) bytes += nscd::capacity_bytes(p.items) + nscd::capacity_bytes(p.buffer);
   return bytes;
 }
