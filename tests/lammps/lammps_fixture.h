@@ -81,10 +81,27 @@ class LammpsTest : public ::testing::Test {
   void SetUp() override { start(); }
   void TearDown() override { stop(); }
 
-  void start()
+  static LAMMPS_NS::LAMMPS *quiet_instance(MPI_Comm comm)
   {
     const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), MPI_COMM_WORLD);
+    return new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), comm);
+  }
+  void start() { lmp = quiet_instance(MPI_COMM_WORLD); }
+
+  // Runs body(comm) on ranks 0 .. size-1 alone, `lmp` a fresh instance on their own
+  // communicator `comm` (the fixture's helpers drive it); the other ranks skip it. The
+  // world's instance is back afterwards.
+  template <class Body> void on_first_ranks(int size, Body body)
+  {
+    MPI_Comm part;
+    MPI_Comm_split(MPI_COMM_WORLD, rank() < size ? 0 : MPI_UNDEFINED, 0, &part);
+    if (rank() >= size) return;
+    LAMMPS_NS::LAMMPS *world_instance = lmp;
+    lmp = quiet_instance(part);
+    body(part);
+    delete lmp;
+    lmp = world_instance;
+    MPI_Comm_free(&part);
   }
   void stop()
   {

@@ -94,20 +94,14 @@ TEST_F(CreateGrainsTest, SameGrainsOnAnyRankCountAndGrid)
       "region b block -3 3 -3 3 2.6 4.5 units box", "create_grains 1 b shape 1 24 density 1 seed 9 random 40 50",
       "region c cylinder z 0 0 2 4.6 6.5 units box", "create_grains 1 c shape 3 10 density 2 seed 11 lattice 1.2"};
   // the serial reference, on rank 0's own communicator
-  MPI_Comm alone;
-  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
   std::vector<double> reference;
   bigint count = 0;
-  if (rank() == 0) {
-    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    auto *serial = new LAMMPS(8, const_cast<char **>(argv), alone);
-    for (const auto &line : box_lines("processors * * *")) serial->input->one(line);
-    for (const auto &line : fills) serial->input->one(line);
-    count = serial->atom->natoms;
-    reference = rows(serial, alone);
-    delete serial;
-    MPI_Comm_free(&alone);
-  }
+  on_first_ranks(1, [&](MPI_Comm alone) {
+    commands(box_lines("processors * * *"));
+    commands(fills);
+    count = lmp->atom->natoms;
+    reference = rows(lmp, alone);
+  });
   MPI_Bcast(&count, 1, MPI_LMP_BIGINT, 0, MPI_COMM_WORLD);
   reference.resize(kFields * count);
   MPI_Bcast(reference.data(), (int) reference.size(), MPI_DOUBLE, 0, MPI_COMM_WORLD);

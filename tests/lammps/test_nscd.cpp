@@ -749,23 +749,17 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnOne)
   for (tagint k = 1; k <= 4; k++) on_all_ranks.push_back(state_of(k));
 
   // rank 0 alone reads the file and continues
-  MPI_Comm alone;
-  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
-  if (rank() == 0) {
-    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    auto *single = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
-    single->input->one("read_restart " + scratch("all_ranks.restart"));
-    for (auto &line : redefine) single->input->one(line);
-    single->input->one("run 200");
+  on_first_ranks(1, [&](MPI_Comm) {
+    run("read_restart " + scratch("all_ranks.restart"));
+    commands(redefine);
+    run("run 200");
     for (tagint k = 1; k <= 4; k++) {
-      const int i = single->atom->map(k);
+      const int i = lmp->atom->map(k);
       ASSERT_GE(i, 0);
       for (int d = 0; d < 3; d++)
-        EXPECT_NEAR(single->atom->x[i][d], on_all_ranks[k - 1][d], 1e-6) << "atom " << k;
+        EXPECT_NEAR(lmp->atom->x[i][d], on_all_ranks[k - 1][d], 1e-6) << "atom " << k;
     }
-    delete single;
-    MPI_Comm_free(&alone);
-  }
+  });
   MPI_Barrier(MPI_COMM_WORLD);
 }
 
@@ -817,13 +811,7 @@ TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
       "fix floor all nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g all gravity 1.0 vector 0 0 -1",
       "fix solver all nscd tolerance 1e-10 max_sweeps 5000"};
   std::vector<double> on_one_rank(3 * 4, 0.0);    // positions of atoms 1..4
-  MPI_Comm alone;
-  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
-  if (rank() == 0) {
-    // the fixture's helpers (scene, add_cube, commands) drive whichever instance lmp is
-    LAMMPS_NS::LAMMPS *all_ranks = lmp;
-    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
+  on_first_ranks(1, [&](MPI_Comm) {
     scene(0.5, "tolerance 1e-10 max_sweeps 5000");
     for (int k = 0; k < 4; k++) add_cube(0.1 * k, 0.05 * k, 0.6 + 1.1 * k);    // falls, then rests
     commands({"shapes assign all shape 1 density 1 orient random 3", "run 300",
@@ -834,10 +822,7 @@ TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
       if (i < 0) continue;
       for (int d = 0; d < 3; d++) on_one_rank[3 * (k - 1) + d] = lmp->atom->x[i][d];
     }
-    delete lmp;
-    lmp = all_ranks;
-    MPI_Comm_free(&alone);
-  }
+  });
   MPI_Bcast(on_one_rank.data(), (int) on_one_rank.size(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
 
   run("read_restart " + scratch("one_rank.restart"));
@@ -945,12 +930,7 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwnContact
 
   for (int size : {2, 1}) {
     if (size >= ranks()) continue;
-    MPI_Comm fewer;
-    MPI_Comm_split(MPI_COMM_WORLD, rank() < size ? 0 : MPI_UNDEFINED, 0, &fewer);
-    if (rank() < size) {
-      LAMMPS_NS::LAMMPS *all_ranks = lmp;
-      const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-      lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), fewer);
+    on_first_ranks(size, [&](MPI_Comm fewer) {
       commands({"processors * 1 1", "read_restart " + scratch("written.restart")});
       commands(redefine);
       const std::array<double, 3> read = warm_start_holdings(solver(), fewer);
@@ -976,10 +956,7 @@ TEST_F(NSCDTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwnContact
         std::printf("[ INFO     ] written on %d ranks: %g records held; read on %d: %g held, at most %g "
                     "on one rank, %g of other ranks' contacts; first step %g sweeps (uninterrupted %g)\n",
                     ranks(), written[0], size, read[0], read[1], read[2], fix_value("solver", 0), first_sweeps);
-      delete lmp;
-      lmp = all_ranks;
-      MPI_Comm_free(&fewer);
-    }
+    });
     MPI_Barrier(MPI_COMM_WORLD);
   }
 }

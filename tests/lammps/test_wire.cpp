@@ -534,28 +534,20 @@ TEST_F(WireOnGrainTest, RestartMovesBetweenRankCounts)
 
   // rank 0 alone: continue the all-rank file, then write its own file and go on
   std::vector<double> alone_after(15, 0.0);
-  MPI_Comm alone;
-  MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
-  if (rank() == 0) {
-    const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-    auto *single = new LAMMPS(8, const_cast<char **>(argv), alone);
-    single->input->one("read_restart " + all_file);
-    for (const std::string &line : redefine) single->input->one(line);
-    single->input->one("run 100");
-    single->input->one("write_restart " + alone_file);
-    single->input->one("run 100");
+  on_first_ranks(1, [&](MPI_Comm) {
+    run("read_restart " + all_file);
+    commands(redefine);
+    commands({"run 100", "write_restart " + alone_file, "run 100"});
     for (int k = 1; k <= 5; k++) {
-      const int i = single->atom->map(k);
+      const int i = lmp->atom->map(k);
       EXPECT_GE(i, 0);    // (no ASSERT: the other ranks wait in MPI_Bcast below)
       if (i < 0) continue;
       for (int d = 0; d < 3; d++) {
-        EXPECT_NEAR(single->atom->x[i][d], on_all_ranks[3 * (k - 1) + d], 1e-10) << "node " << k;
-        alone_after[3 * (k - 1) + d] = single->atom->x[i][d];
+        EXPECT_NEAR(lmp->atom->x[i][d], on_all_ranks[3 * (k - 1) + d], 1e-10) << "node " << k;
+        alone_after[3 * (k - 1) + d] = lmp->atom->x[i][d];
       }
     }
-    delete single;
-    MPI_Comm_free(&alone);
-  }
+  });
   MPI_Bcast(alone_after.data(), 15, MPI_DOUBLE, 0, MPI_COMM_WORLD);
 
   // all ranks: continue the file rank 0 wrote alone
@@ -684,12 +676,7 @@ TEST_F(WireOnGrainTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwn
 
   for (int size : {2, 1}) {
     if (size >= ranks()) continue;
-    MPI_Comm fewer;
-    MPI_Comm_split(MPI_COMM_WORLD, rank() < size ? 0 : MPI_UNDEFINED, 0, &fewer);
-    if (rank() < size) {
-      LAMMPS *all_ranks = lmp;
-      const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-      lmp = new LAMMPS(8, const_cast<char **>(argv), fewer);
+    on_first_ranks(size, [&](MPI_Comm fewer) {
       commands({"processors * * 1", "read_restart " + scratch("written.restart")});
       commands(redefine);
       const std::array<double, 3> read = memory_holdings(lmp, fewer);
@@ -712,10 +699,7 @@ TEST_F(WireOnGrainTest, RestartWrittenOnAllRanksContinuesOnFewerWithOnlyTheirOwn
                     "rank, %g of other ranks' contacts; nodes off the uninterrupted run by %.3g after 1 step, "
                     "%.3g after 100\n", ranks(), written[0], size, read[0], read[1], read[2], off_first,
                     off_hundredth);
-      delete lmp;
-      lmp = all_ranks;
-      MPI_Comm_free(&fewer);
-    }
+    });
     MPI_Barrier(MPI_COMM_WORLD);
   }
 }
@@ -1935,18 +1919,10 @@ class WireAcrossRanksTest : public WireOnBoundaryTest {
     commands(drag_deck(data, shapes));
     const std::vector<double> here = drag_outcome(MPI_COMM_WORLD);
     std::vector<double> alone_outcome(here.size(), 0.0);
-    MPI_Comm alone;
-    MPI_Comm_split(MPI_COMM_WORLD, rank() == 0 ? 0 : MPI_UNDEFINED, 0, &alone);
-    if (rank() == 0) {
-      LAMMPS_NS::LAMMPS *all_ranks = lmp;
-      const char *argv[] = {"lmp", "-log", "none", "-echo", "none", "-screen", "none", "-nocite"};
-      lmp = new LAMMPS_NS::LAMMPS(8, const_cast<char **>(argv), alone);
+    on_first_ranks(1, [&](MPI_Comm alone) {
       commands(drag_deck(data, shapes));
       alone_outcome = drag_outcome(alone);
-      delete lmp;
-      lmp = all_ranks;
-      MPI_Comm_free(&alone);
-    }
+    });
     MPI_Bcast(alone_outcome.data(), (int) alone_outcome.size(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
     const int atoms = kNodes + 2, n = (int) here.size();
     double scale[3] = {0.0, 0.0, 0.0}, worst[3] = {0.0, 0.0, 0.0};    // positions, velocities, forces
