@@ -18,7 +18,8 @@
 // a hard step's error sits. doc/nscd_solver.md, "Replaying a step".
 //
 //   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
-//                  [--max-sweeps N] [--skip yes|no] [--coarse C] [--repeat N] [--where BINS]
+//                  [--max-sweeps N] [--skip yes|no] [--coarse C] [--relaxation W]
+//                  [--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS]
 // Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip no, no coarse).
 #include "solver/problem_file.h"
 
@@ -38,8 +39,8 @@ namespace {
 [[noreturn]] void usage(const std::string &why)
 {
   std::fprintf(stderr, "replay_problem: %s\nusage: replay_problem FILE [--method gs|nesterov|nncg] "
-               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--coarse C] [--repeat N] "
-               "[--where BINS]\n", why.c_str());
+               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--coarse C] [--relaxation W] "
+               "[--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS]\n", why.c_str());
   std::exit(2);
 }
 
@@ -99,6 +100,13 @@ int main(int argc, char **argv)
     else if (key == "--max-sweeps") options.max_sweeps = std::atoi(value.c_str());
     else if (key == "--skip") options.skip_separating = value == "yes";
     else if (key == "--coarse") options.coarse_cell = std::atof(value.c_str());
+    else if (key == "--relaxation") options.relaxation = std::atof(value.c_str());
+    else if (key == "--order") {
+      if (value == "as_given") options.order = SweepOrder::as_given;
+      else if (value == "shuffled") options.order = SweepOrder::shuffled;
+      else if (value == "forward_backward") options.order = SweepOrder::forward_backward;
+      else usage("unknown order " + value);
+    }
     else if (key == "--repeat") repeat = std::max(1, std::atoi(value.c_str()));
     else if (key == "--where") where = std::max(1, std::atoi(value.c_str()));
     else usage("unknown option " + key);
@@ -123,8 +131,9 @@ int main(int argc, char **argv)
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   long active = report.terms.active;
-  std::printf("%s: %zu bodies, %zu contacts (%ld active at the end): %d sweeps, residual %.6e%s, %.2f ms "
-              "(best of %d)\n", argv[1], file.problem.bodies.size(), file.problem.contacts.size(), active,
+  std::printf("%s: %zu bodies, %zu contacts (%ld active at the end: %ld sticking, %ld sliding): %d sweeps, "
+              "residual %.6e%s, %.2f ms (best of %d)\n", argv[1], file.problem.bodies.size(),
+              file.problem.contacts.size(), active, report.terms.sticking, report.terms.sliding,
               report.sweeps, report.residual, report.converged ? "" : " (not converged)", 1e3 * best, repeat);
   if (where) print_where(file, options, where);
   return 0;
