@@ -14,7 +14,7 @@
 """Checks of the 2-layer column smoke test (tests/lammps/run_example_check.sh column):
 the logs of examples/column/in.column with the wire (WIRE_LOG) and without (BARE_LOG).
 
-    check_column.py WIRE_LOG BARE_LOG [RING_LOG]
+    check_column.py WIRE_LOG BARE_LOG [RING_LOG [PRESTRAIN_LOG PRESTRAIN]]
 
 Fails (exit 1, naming the check) unless, in every run:
   * every phase ran (the deck's "phase N done" lines, N = 1..5);
@@ -37,7 +37,16 @@ and with the wire:
 and with closed rings (RING_LOG, `-var loop ring`):
   * every loop is a closed ring whose elements are exactly the rest length of the bond type
     (create_wire's element length against the bond_coeff the deck gave, to 1e-9): laid
-    unstrained.
+    unstrained;
+and with rings laid in tension (PRESTRAIN_LOG: the ring run's settings and seed, `-var
+prestrain PRESTRAIN -var last 1`):
+  * every ring is laid at the chord (its elements at the length the bond type had while
+    create_wire ran, to 1e-9), and the rest length is then chord / (1 + PRESTRAIN) (1e-9);
+  * the runs use that rest length: at the end of the deposit the wire's stretch energy
+    exceeds the unstrained rings' (RING_LOG, the same trajectory until the first ring) by
+    more than 2 % of what the rings held when laid, n 1/2 k_elo r0 PRESTRAIN^2 over their n
+    elements. The rings slide inward over the grains and give up most of it (they kept 15 % on
+    27 Nov 2026); rest lengths not applied would leave the unstrained rings' 0.004 %.
 Two layers are too low to collapse without wire (both keep all their grains): the
 collapse of the control is shown at 5 layers in examples/column/README.md, not here.
 """
@@ -149,12 +158,46 @@ def check_rings(path):
         print(f"rings: {len(made)} closed rings, elements at the rest length {rest:.10g} to {worst:.2g}")
 
 
+def last_deposit_stretch(path):
+    """The wire's stretch energy in the last thermo row of phase 1."""
+    table = logs.thermo_columns(path, ["v_phase", "v_e_stretch"])
+    table = table[table[:, 0] == 1]
+    return table[-1, 1] if len(table) else float("nan")
+
+
+def check_prestrain(path, ring_path, prestrain):
+    """Rings laid at the chord, then the rest length chord / (1 + prestrain), used by the runs."""
+    with open(path) as f:
+        text = f.read()
+    # per ring: the bond_coeff before create_wire (the chord), the elements made, the one after
+    laid = re.findall(r"^bond_coeff 1 (\S+) ([-+0-9.eE]+)\s*\n(?:.*\n)*?create_wire: loop \(([^)]*)\): (\d+) nodes.*"
+                      r"elements of length ([-+0-9.eE]+).*\n(?:.*\n)*?bond_coeff 1 \S+ ([-+0-9.eE]+)\s*$", text, re.M)
+    check(len(laid) > 0, "prestrain: no bond_coeff / create_wire / bond_coeff sequence in the log")
+    held = 0.0
+    for k_elo, chord, kind, nodes, length, rest in laid:
+        k_elo, chord, length, rest = float(k_elo), float(chord), float(length), float(rest)
+        check(kind == "closed ring", f"prestrain: create_wire made a {kind}, expected a closed ring")
+        check(abs(length / chord - 1) < 1e-9, f"prestrain: elements of {length}, laid while the rest length was {chord}")
+        check(abs(rest * (1 + prestrain) / chord - 1) < 1e-9,
+              f"prestrain: rest length {rest} after laying at {chord}, expected chord / (1 + {prestrain})")
+        held += int(nodes) * 0.5 * k_elo * rest * prestrain ** 2    # a closed ring: as many elements as nodes
+    strained, unstrained = last_deposit_stretch(path), last_deposit_stretch(ring_path)
+    check(strained - unstrained > 0.02 * held,
+          f"prestrain: stretch energy at the end of the deposit {strained:.4g}, unstrained rings {unstrained:.4g}: "
+          f"the runs did not keep the rings in tension (laid with {held:.4g})")
+    print(f"prestrain {prestrain}: {len(laid)} rings laid at the chord, rest length chord / {1 + prestrain}; "
+          f"stretch energy at the end of the deposit {strained:.4g} against {unstrained:.4g} unstrained "
+          f"(laid with {held:.4g})")
+
+
 def main():
-    if len(sys.argv) not in (3, 4):
+    if len(sys.argv) not in (3, 4, 6):
         sys.exit(__doc__)
-    if len(sys.argv) == 4:
+    if len(sys.argv) >= 4:
         check_run(sys.argv[3], "ring")
         check_rings(sys.argv[3])
+    if len(sys.argv) == 6:
+        check_prestrain(sys.argv[4], sys.argv[3], float(sys.argv[5]))
     wire_done = check_run(sys.argv[1], "wire")
     bare_done = check_run(sys.argv[2], "no wire")
     wire, bare = walls(wire_done), walls(bare_done)

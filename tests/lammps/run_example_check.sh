@@ -41,10 +41,12 @@ case "$name" in
     "${launch[@]}" "$lmp" -in "$deck" -log log.column "${small[@]}" > screen.txt
     "${launch[@]}" "$lmp" -in "$deck" -log log.bare "${small[@]}" -var wire no -var name bare > screen_bare.txt
     "${launch[@]}" "$lmp" -in "$deck" -log log.ring "${small[@]}" -var loop ring -var name ring > screen_ring.txt
+    "${launch[@]}" "$lmp" -in "$deck" -log log.prestrain "${small[@]}" -var loop ring -var prestrain 0.01 -var last 1 \
+      -var name prestrain > screen_prestrain.txt
     for kind in grains.*.vtk fabric.*.dump pairs.*.dump wire.*.dump nodes.*.dump phase5.restart; do
       ls column.$kind > /dev/null || { echo "column: no column.$kind written"; exit 1; }
     done
-    /usr/bin/python3 "$here/check_column.py" log.column log.bare log.ring
+    /usr/bin/python3 "$here/check_column.py" log.column log.bare log.ring log.prestrain 0.01
     ;;
   string)  # 3 layers of the single string through all five phases, briefly (< 1 min): one
            # molecule, one chain (elements = nodes - 1), every element laid at its rest length
