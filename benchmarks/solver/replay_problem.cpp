@@ -20,6 +20,7 @@
 //   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
 //                  [--max-sweeps N] [--skip yes|no] [--coarse C] [--relaxation W]
 //                  [--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS]
+//                  [--worst N]
 // Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip no, no coarse).
 #include "solver/problem_file.h"
 
@@ -40,7 +41,7 @@ namespace {
 {
   std::fprintf(stderr, "replay_problem: %s\nusage: replay_problem FILE [--method gs|nesterov|nncg] "
                "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--coarse C] [--relaxation W] "
-               "[--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS]\n", why.c_str());
+               "[--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS] [--worst N]\n", why.c_str());
   std::exit(2);
 }
 
@@ -75,6 +76,35 @@ void print_where(const ProblemFile &file, const SolverOptions &options, int bins
   iterate(problem, options, communication);
 }
 
+// The n contacts with the largest residual at the end of the solve, and how much of the
+// squared error they hold: whether a stalled step's error is a few contacts or spread.
+void print_worst(const ContactProblem &problem, int n)
+{
+  std::vector<double> error, scale;
+  problem.contact_residuals(error, scale);
+  double error_squared = 0.0, scale_squared = 0.0;
+  for (std::size_t c = 0; c < error.size(); ++c) error_squared += error[c] * error[c], scale_squared += scale[c] * scale[c];
+  std::vector<std::size_t> order(error.size());
+  for (std::size_t c = 0; c < order.size(); ++c) order[c] = c;
+  n = std::min<int>(n, (int) order.size());
+  std::partial_sort(order.begin(), order.begin() + n, order.end(),
+                    [&](std::size_t a, std::size_t b) { return error[a] > error[b]; });
+  static const char *regimes[] = {"open", "sticking", "sliding"};
+  std::printf("the %d contacts with the largest residual (share of the squared error; %zu contacts):\n", n,
+              order.size());
+  double held = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const Contact &c = problem.contacts[order[k]];
+    const double share = error[order[k]] * error[order[k]] / (error_squared + 1e-300);
+    held += share;
+    std::printf("  contact %zu: bodies %d %d, z %.3f, gap %.2e, mu %.2f, %s, |P| %.3e, share %.3f (sum %.3f)\n",
+                order[k], c.body_i, c.body_j, c.point.z(), c.gap, c.friction,
+                regimes[std::min<int>(2, (int) c.regime)], c.impulse.norm(), share, held);
+  }
+  std::printf("  relative residual of the rest: %.3e\n",
+              std::sqrt(std::max(0.0, error_squared * (1 - held)) / (scale_squared + 1e-300)));
+}
+
 }    // namespace
 
 int main(int argc, char **argv)
@@ -85,7 +115,7 @@ int main(int argc, char **argv)
   options.tolerance = 1e-4;
   options.check_every = 4;
   options.max_sweeps = 1000;
-  int repeat = 5, where = 0;
+  int repeat = 5, where = 0, worst = 0;
   for (int k = 2; k < argc; k += 2) {
     const std::string key = argv[k];
     if (k + 1 >= argc) usage(key + " needs a value");
@@ -109,6 +139,7 @@ int main(int argc, char **argv)
     }
     else if (key == "--repeat") repeat = std::max(1, std::atoi(value.c_str()));
     else if (key == "--where") where = std::max(1, std::atoi(value.c_str()));
+    else if (key == "--worst") worst = std::max(1, std::atoi(value.c_str()));
     else usage("unknown option " + key);
   }
   std::ifstream in(argv[1]);
@@ -124,8 +155,9 @@ int main(int argc, char **argv)
   }
   SolveReport report;
   double best = INFINITY;
+  ContactProblem problem;
   for (int k = 0; k < repeat; ++k) {
-    ContactProblem problem = file.problem;
+    problem = file.problem;
     const auto start = std::chrono::steady_clock::now();
     report = solve(problem, options);
     best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
@@ -136,5 +168,6 @@ int main(int argc, char **argv)
               file.problem.contacts.size(), active, report.terms.sticking, report.terms.sliding,
               report.sweeps, report.residual, report.converged ? "" : " (not converged)", 1e3 * best, repeat);
   if (where) print_where(file, options, where);
+  if (worst) print_worst(problem, worst);
   return 0;
 }
