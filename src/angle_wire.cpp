@@ -32,7 +32,7 @@
 #include <cmath>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 AngleWire::AngleWire(LAMMPS *lmp) : Angle(lmp) {}
 
@@ -99,10 +99,10 @@ void AngleWire::coeff(int narg, char **arg)
   if (!allocated) allocate();
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nangletypes, ilo, ihi, error);
-  const double k = nscd_args::number(lmp, "angle_coeff wire", "k_rot", arg[1]);
+  const double k = NSCD_NS::number(lmp, "angle_coeff wire", "k_rot", arg[1]);
   if (!(k >= 0.0) || !std::isfinite(k))
     error->all(FLERR, "angle_coeff wire: k_rot = {} must be a finite moment >= 0 (k_rot = EI / l)", k);
-  const double theta0 = narg == 3 ? nscd_args::number(lmp, "angle_coeff wire", "theta0", arg[2]) : 180.0;
+  const double theta0 = narg == 3 ? NSCD_NS::number(lmp, "angle_coeff wire", "theta0", arg[2]) : 180.0;
   if (!(theta0 > 0.0 && theta0 <= 180.0))
     error->all(FLERR, "angle_coeff wire: theta0 = {} must be in (0, 180] degrees (180: straight); "
                "see doc/angle_style_wire.md, Errors", theta0);

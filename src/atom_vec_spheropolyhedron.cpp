@@ -31,7 +31,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 namespace {
 const char *const STYLE_NAME = "spheropolyhedron";

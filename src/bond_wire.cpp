@@ -32,7 +32,7 @@
 #include <string>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 namespace {
 // What bond_coeff and the restart reader both refuse ("" if the values are fine).
@@ -113,8 +113,8 @@ void BondWire::coeff(int narg, char **arg)
   if (!allocated) allocate();
   int ilo, ihi;
   utils::bounds(FLERR, arg[0], 1, atom->nbondtypes, ilo, ihi, error);
-  const double stiffness = nscd_args::number(lmp, "bond_coeff wire", "k_elo", arg[1]);
-  const double rest = nscd_args::number(lmp, "bond_coeff wire", "rest length r0", arg[2]);
+  const double stiffness = NSCD_NS::number(lmp, "bond_coeff wire", "k_elo", arg[1]);
+  const double rest = NSCD_NS::number(lmp, "bond_coeff wire", "rest length r0", arg[2]);
   const std::string problem = problem_of(stiffness, rest);
   if (!problem.empty()) error->all(FLERR, "bond_coeff wire: {}", problem);
   bool string = false;

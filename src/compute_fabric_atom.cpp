@@ -25,6 +25,7 @@
 #include <string>
 
 using namespace LAMMPS_NS;
+using namespace NSCD_NS;
 
 namespace {
 enum Column { XX, YY, ZZ, XY, XZ, YZ, COUNT, NCOLUMNS };

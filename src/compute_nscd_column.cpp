@@ -32,7 +32,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 namespace {
 enum Output { HEIGHT, RETAINED_FRACTION, RETAINED, GRAINS, TOP, NOUTPUTS };
@@ -46,17 +46,17 @@ ComputeNSCDColumn::ComputeNSCDColumn(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 6)
     error->all(FLERR, "Illegal compute nscd/column command: expected 'compute ID group nscd/column "
                "X Y R [floor Z] [percentile P]'");
-  axis_x = nscd_args::number(lmp, "compute nscd/column", "axis X", arg[3]);
-  axis_y = nscd_args::number(lmp, "compute nscd/column", "axis Y", arg[4]);
-  radius = nscd_args::number(lmp, "compute nscd/column", "radius", arg[5]);
+  axis_x = NSCD_NS::number(lmp, "compute nscd/column", "axis X", arg[3]);
+  axis_y = NSCD_NS::number(lmp, "compute nscd/column", "axis Y", arg[4]);
+  radius = NSCD_NS::number(lmp, "compute nscd/column", "radius", arg[5]);
   if (!(radius > 0.0) || !std::isfinite(radius) || !std::isfinite(axis_x) || !std::isfinite(axis_y))
     error->all(FLERR, "compute nscd/column: the axis ({}, {}) must be finite and the radius {} positive",
                arg[3], arg[4], arg[5]);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     const std::string text =
-        nscd_args::keyword_value(lmp, "compute nscd/column", narg, arg, iarg, {"floor", "percentile"});
-    const double value = nscd_args::number(lmp, "compute nscd/column", key, text);
+        NSCD_NS::keyword_value(lmp, "compute nscd/column", narg, arg, iarg, {"floor", "percentile"});
+    const double value = NSCD_NS::number(lmp, "compute nscd/column", key, text);
     if (key == "floor") {
       if (!std::isfinite(value)) error->all(FLERR, "compute nscd/column: floor {} must be finite", arg[iarg + 1]);
       floor_z = value;

@@ -34,7 +34,7 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 namespace {
 // one row per contact point

@@ -33,6 +33,7 @@
 #include <utility>
 
 using namespace LAMMPS_NS;
+using namespace NSCD_NS;
 
 namespace {
 enum Column { FORCE, DIAMETER, TENSILE_STRESS, CRUSH_INDEX, NCOLUMNS };
@@ -52,7 +53,7 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
   const char *usage = "expected 'compute ID group nscd/crush/atom S0 [size D0 weibull M] "
                       "[boundaries yes|no] [wire yes|no]'";
   if (narg < 4) error->all(FLERR, "{}: the strength S0 is missing; {}", where, usage);
-  strength = nscd_args::number(lmp, where, "strength", arg[3]);
+  strength = NSCD_NS::number(lmp, where, "strength", arg[3]);
   if (!(strength > 0.0)) error->all(FLERR, "{}: strength {} must be > 0 (a stress, force/area); {}", where, arg[3], usage);
   for (int iarg = 4; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
@@ -60,7 +61,7 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
     const std::string value = arg[iarg + 1];
     if (parse_contact_keyword(key, value)) {
     } else if (key == "size" || key == "weibull") {
-      const double v = nscd_args::number(lmp, where, key, value);
+      const double v = NSCD_NS::number(lmp, where, key, value);
       if (!(v > 0.0)) error->all(FLERR, "{}: {} {} must be > 0; {}", where, key, value, usage);
       (key == "size" ? reference_size : weibull) = v;
     } else {

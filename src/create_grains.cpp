@@ -42,7 +42,7 @@
 #include <string>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 struct CreateGrains::Request {
   int type = 0;
@@ -129,7 +129,7 @@ void CreateGrains::parse(int narg, char **arg)
   const char *usage = "expected 'create_grains TYPE REGION-ID shape IMIN IMAX density RHO seed SEED "
                       "(lattice SPACING | random N TRIES) [gap G]'";
   if (narg < 2) error->all(FLERR, "Illegal create_grains command: {}", usage);
-  r.type = (int) nscd_args::whole(lmp, "create_grains", "TYPE", arg[0], 1, INT_MAX);
+  r.type = (int) NSCD_NS::whole(lmp, "create_grains", "TYPE", arg[0], 1, INT_MAX);
   if (r.type > atom->ntypes)
     error->all(FLERR, "create_grains: atom type {} does not exist (the box has {} types)", r.type, atom->ntypes);
   r.region = domain->get_region_by_id(arg[1]);
@@ -149,34 +149,34 @@ void CreateGrains::parse(int narg, char **arg)
       error->all(FLERR, "create_grains: unknown keyword '{}'; {}", key, usage);
     if (iarg + n >= narg) error->all(FLERR, "create_grains: keyword '{}' needs {} value(s); {}", key, n, usage);
     if (key == "shape") {
-      r.shape_lo = (int) nscd_args::whole(lmp, "create_grains", "shape IMIN", arg[iarg + 1], INT_MIN, INT_MAX);
-      r.shape_hi = (int) nscd_args::whole(lmp, "create_grains", "shape IMAX", arg[iarg + 2], INT_MIN, INT_MAX);
+      r.shape_lo = (int) NSCD_NS::whole(lmp, "create_grains", "shape IMIN", arg[iarg + 1], INT_MIN, INT_MAX);
+      r.shape_hi = (int) NSCD_NS::whole(lmp, "create_grains", "shape IMAX", arg[iarg + 2], INT_MIN, INT_MAX);
       have_shape = true;
     } else if (key == "density") {
-      r.density = nscd_args::number(lmp, "create_grains", "density", arg[iarg + 1]);
+      r.density = NSCD_NS::number(lmp, "create_grains", "density", arg[iarg + 1]);
       if (!(r.density > 0.0) || !std::isfinite(r.density))
         error->all(FLERR, "create_grains: density {} must be positive and finite", arg[iarg + 1]);
       have_density = true;
     } else if (key == "seed") {
-      r.seed = nscd_args::whole(lmp, "create_grains", "seed", arg[iarg + 1]);
+      r.seed = NSCD_NS::whole(lmp, "create_grains", "seed", arg[iarg + 1]);
       if (r.seed <= 0) error->all(FLERR, "create_grains: seed {} must be a positive integer", r.seed);
       have_seed = true;
     } else if (key == "lattice") {
       r.layout = Request::Layout::lattice;
-      r.spacing = nscd_args::number(lmp, "create_grains", "lattice SPACING", arg[iarg + 1]);
+      r.spacing = NSCD_NS::number(lmp, "create_grains", "lattice SPACING", arg[iarg + 1]);
       if (!(r.spacing > 0.0) || !std::isfinite(r.spacing))
         error->all(FLERR, "create_grains: lattice spacing {} must be positive and finite", arg[iarg + 1]);
       have_layout = true;
     } else if (key == "random") {
       r.layout = Request::Layout::random;
-      r.count = nscd_args::whole(lmp, "create_grains", "random N", arg[iarg + 1]);
-      r.tries = nscd_args::whole(lmp, "create_grains", "random TRIES", arg[iarg + 2]);
+      r.count = NSCD_NS::whole(lmp, "create_grains", "random N", arg[iarg + 1]);
+      r.tries = NSCD_NS::whole(lmp, "create_grains", "random TRIES", arg[iarg + 2]);
       if (r.count < 1) error->all(FLERR, "create_grains: random N {} must be at least 1", r.count);
       if (r.tries < 1) error->all(FLERR, "create_grains: random TRIES {} must be at least 1", r.tries);
       if (r.count > LONG_MAX / r.tries) error->all(FLERR, "create_grains: random N x TRIES is too large");
       have_layout = true;
     } else if (key == "gap") {
-      r.gap = nscd_args::number(lmp, "create_grains", "gap", arg[iarg + 1]);
+      r.gap = NSCD_NS::number(lmp, "create_grains", "gap", arg[iarg + 1]);
       if (!(r.gap >= 0.0) || !std::isfinite(r.gap))
         error->all(FLERR, "create_grains: gap {} must be zero or positive", arg[iarg + 1]);
     }

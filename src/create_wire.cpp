@@ -52,7 +52,7 @@
 #include <sstream>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
+using namespace NSCD_NS;
 
 namespace {
 constexpr double DEGREE = M_PI / 180.0;
@@ -175,13 +175,13 @@ void CreateWire::parse(int narg, char **arg)
   const char *usage = "expected 'create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 "
                       "Z1 X2 Y2 Z2 | polyline FILE, then bond BTYPE mass M [angle ATYPE] ...'";
   if (narg < 3) error->all(FLERR, "Illegal create_wire command: {}", usage);
-  r.node_type = (int) nscd_args::whole(lmp, "create_wire", "atom type", arg[0], INT_MIN, INT_MAX);
+  r.node_type = (int) NSCD_NS::whole(lmp, "create_wire", "atom type", arg[0], INT_MIN, INT_MAX);
   if (r.node_type < 1 || r.node_type > atom->ntypes)
     error->all(FLERR, "create_wire: atom type {} is not between 1 and {}", r.node_type, atom->ntypes);
   r.shape_name = arg[1];
   // a number of the path (named by its place in the usage) or of a keyword (named by it)
   auto number = [&](int i, const std::string &what = "") {
-    return nscd_args::number(lmp, "create_wire " + r.shape_name, what.empty() ? arg[i - 1] : what, arg[i]);
+    return NSCD_NS::number(lmp, "create_wire " + r.shape_name, what.empty() ? arg[i - 1] : what, arg[i]);
   };
   auto point = [&](int i, const std::string &what) {
     return nscd::Vec3(number(i, what + " x"), number(i + 1, what + " y"), number(i + 2, what + " z"));
@@ -232,11 +232,11 @@ void CreateWire::parse(int narg, char **arg)
       error->all(FLERR, "create_wire: '{}' applies to a loop or helix, not a {}", key, r.shape_name);
     if (key == "bond") {
       need(1);
-      r.bond_type = (int) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
+      r.bond_type = (int) NSCD_NS::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "angle") {
       need(1);
-      r.angle_type = (int) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
+      r.angle_type = (int) NSCD_NS::whole(lmp, "create_wire", key, arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "mass") {
       need(1);
@@ -266,20 +266,20 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 4;
     } else if (key == "nodes") {
       need(1);
-      const bigint n = nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1]);
+      const bigint n = NSCD_NS::whole(lmp, "create_wire", key, arg[iarg + 1]);
       if (n < 2 || n > 100000000)
         error->all(FLERR, "create_wire: nodes {} must be between 2 and 100000000", n);
       r.nodes = (int) n;
       iarg += 2;
     } else if (key == "mol") {
       need(1);
-      r.molecule = (tagint) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
+      r.molecule = (tagint) NSCD_NS::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
       r.mol_given = true;
       iarg += 2;
     } else if (key == "from") {
       need(1);
       if (strcmp(arg[iarg + 1], "last") == 0) r.from_last = true;
-      else r.end.tag = (tagint) nscd_args::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
+      else r.end.tag = (tagint) NSCD_NS::whole(lmp, "create_wire", key, arg[iarg + 1], 1, MAXTAGINT);
       iarg += 2;
     } else if (key == "radius") {
       need(1);

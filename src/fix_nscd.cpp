@@ -59,8 +59,7 @@
 #include <vector>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
-using namespace nscd_contact;
+using namespace NSCD_NS;
 using namespace FixConst;
 
 namespace {
@@ -148,7 +147,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     if (key == "write_problem") {
       if (iarg + 2 >= narg)
         error->all(FLERR, "fix nscd: write_problem needs a step and a file name (write_problem STEP FILE)");
-      problem_step = nscd_args::whole(lmp, "fix nscd", key, value, 0, MAXBIGINT);
+      problem_step = NSCD_NS::whole(lmp, "fix nscd", key, value, 0, MAXBIGINT);
       problem_file = arg[iarg + 2];
       ++iarg;
     } else if (!set_option(key, value)) {
@@ -171,16 +170,16 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
 /* One solver keyword of the fix line or of fix_modify: false if KEY is none of them. */
 bool FixNSCD::set_option(const std::string &key, const char *value)
 {
-  if (key == "theta") solver->options.theta = nscd_args::number(lmp, "fix nscd", key, value);
-  else if (key == "tolerance") solver->options.tolerance = nscd_args::number(lmp, "fix nscd", key, value);
-  else if (key == "max_sweeps") solver->options.max_sweeps = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-  else if (key == "relaxation") solver->options.relaxation = nscd_args::number(lmp, "fix nscd", key, value);
-  else if (key == "seed") solver->options.seed = (std::uint64_t) nscd_args::whole(lmp, "fix nscd", key, value);
-  else if (key == "exchange") exchange_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-  else if (key == "check") solver->options.check_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-  else if (key == "warn") warn_every = (int) nscd_args::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
-  else if (key == "overlap_speed") solver->options.overlap_speed = nscd_args::number(lmp, "fix nscd", key, value);
-  else if (key == "interpenetration") interpenetration_warning = nscd_args::number(lmp, "fix nscd", key, value);
+  if (key == "theta") solver->options.theta = NSCD_NS::number(lmp, "fix nscd", key, value);
+  else if (key == "tolerance") solver->options.tolerance = NSCD_NS::number(lmp, "fix nscd", key, value);
+  else if (key == "max_sweeps") solver->options.max_sweeps = (int) NSCD_NS::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "relaxation") solver->options.relaxation = NSCD_NS::number(lmp, "fix nscd", key, value);
+  else if (key == "seed") solver->options.seed = (std::uint64_t) NSCD_NS::whole(lmp, "fix nscd", key, value);
+  else if (key == "exchange") exchange_every = (int) NSCD_NS::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "check") solver->options.check_every = (int) NSCD_NS::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "warn") warn_every = (int) NSCD_NS::whole(lmp, "fix nscd", key, value, INT_MIN, INT_MAX);
+  else if (key == "overlap_speed") solver->options.overlap_speed = NSCD_NS::number(lmp, "fix nscd", key, value);
+  else if (key == "interpenetration") interpenetration_warning = NSCD_NS::number(lmp, "fix nscd", key, value);
   else if (key == "order") {
     const std::string order = value;
     if (order == "as_given") solver->options.order = nscd::SweepOrder::as_given;
@@ -261,9 +260,9 @@ void FixNSCD::init()
                "'pair_style nscd' and 'pair_coeff * * FRICTION'");
   if (!pair->compute_flag)
     error->all(FLERR, "fix nscd: pair_modify compute no switches off contact detection; remove it");
-  nscd_checks::refuse_second_instance<FixNSCD>(lmp, this, "one solver handles all grains and boundaries");
+  NSCD_NS::refuse_second_instance<FixNSCD>(lmp, this, "one solver handles all grains and boundaries");
   if (domain->dimension != 3) error->all(FLERR, "fix nscd works in 3d only");
-  nscd_units::require_plain_mechanics(lmp, "fix nscd");
+  NSCD_NS::require_plain_mechanics(lmp, "fix nscd");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix nscd does not work with run_style respa; use run_style verlet");
   if (update->whichflag == 2)
@@ -299,7 +298,7 @@ void FixNSCD::check_no_other_integrator()
 {
   for (Fix *other : modify->get_fix_list()) {
     if (other == this || !other->time_integrate) continue;
-    const tagint any_shared = nscd_checks::lowest_tag_where(lmp, [&](int i) {
+    const tagint any_shared = NSCD_NS::lowest_tag_where(lmp, [&](int i) {
       return (atom->mask[i] & groupbit) && (atom->mask[i] & other->groupbit) && avec->shape[i] != 0;
     });
     if (any_shared)
@@ -327,9 +326,9 @@ void FixNSCD::check_no_bonds_on_grains()
     for (int n = 0; n < neighbor->nbondlist; n++) note(neighbor->bondlist[n], 2);
   if (force->angle)
     for (int n = 0; n < neighbor->nanglelist; n++) note(neighbor->anglelist[n], 3);
-  const tagint grain = nscd_checks::lowest_tag_of_all(world, bad[0]);
+  const tagint grain = NSCD_NS::lowest_tag_of_all(world, bad[0]);
   if (grain == MAXTAGINT) return;
-  const tagint partner = nscd_checks::lowest_tag_of_all(world, bad[0] == grain ? bad[1] : MAXTAGINT);
+  const tagint partner = NSCD_NS::lowest_tag_of_all(world, bad[0] == grain ? bad[1] : MAXTAGINT);
   error->all(FLERR, "fix nscd: grain ID {} is in a bond or angle (with atom ID "
              "{}); bonds and angles join wire nodes (shape 0) only", grain, partner);
 }
@@ -365,7 +364,7 @@ void FixNSCD::warn_if_grains_overlap()
 void FixNSCD::check_no_points_in_group()
 {
   const tagint any_point =
-      nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] == 0; });
+      NSCD_NS::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] == 0; });
   if (any_point)
     error->all(FLERR, "fix nscd: atom ID {} in group '{}' is a point (shape 0); give it a shape "
                "('shapes assign') or use a group of grains", any_point, group->names[igroup]);
@@ -375,7 +374,7 @@ void FixNSCD::check_no_points_in_group()
    `set diameter`, `set density`): refuse grains whose data no longer match their shape. */
 void FixNSCD::check_grains_are_consistent()
 {
-  const tagint any_bad = nscd_checks::lowest_tag_where(lmp, [&](int i) {
+  const tagint any_bad = NSCD_NS::lowest_tag_where(lmp, [&](int i) {
     if (!(atom->mask[i] & groupbit) || avec->shape[i] == 0) return false;
     const nscd::Spheropolyhedron &s = avec->shape_of(i);
     const double density = avec->rmass[i] / s.volume;
@@ -730,7 +729,7 @@ void FixNSCD::keep_restored_records(const std::vector<nscd::ImpulseRecord> &reco
    the records are filed by the local indices of the last solve, before anything moves. */
 void FixNSCD::check_no_migration_before_this_fix()
 {
-  nscd_checks::refuse_migration_before(lmp, this, "its warm-start impulses");
+  NSCD_NS::refuse_migration_before(lmp, this, "its warm-start impulses");
 }
 
 bool FixNSCD::owned_here(tagint tag) const
@@ -1197,22 +1196,22 @@ void FixNSCD::unpack_reverse_comm(int n, int *list, double *buf)
 void FixNSCD::write_restart(FILE *fp)
 {
   keep_impulses_with_atoms();
-  nscd_restart::SolverBlock block;
+  NSCD_NS::SolverBlock block;
   block.dt = warm_start_dt;
-  if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::solver_block(block));
+  if (comm->me == 0) NSCD_NS::write_block(fp, NSCD_NS::solver_block(block));
 }
 
 /* read_restart hands every rank the block written above (without its size). A file of
    format 3 holds every contact's record here: each rank keeps its own atoms'. */
 void FixNSCD::restart(char *bytes)
 {
-  nscd_restart::SolverBlock block = nscd_checks::read_restart_block(
-      lmp, this, nscd_restart::read_solver_block, bytes,
+  NSCD_NS::SolverBlock block = NSCD_NS::read_restart_block(
+      lmp, this, NSCD_NS::read_solver_block, bytes,
       "To start without the stored warm start, define fix nscd with another ID");
   if (!block.read) {
-    nscd_checks::warn_format_not_read(lmp, this, "the warm start", block.format,
-                                      "; it is not read (the first step starts from zero impulses; write the "
-                                      "restart again with this build to keep it)");
+    NSCD_NS::warn_format_not_read(lmp, this, "the warm start", block.format,
+                                  "; it is not read (the first step starts from zero impulses; write the "
+                                  "restart again with this build to keep it)");
     return;
   }
   // The impulses' timestep, so that a run at another `timestep` starts from the same forces
@@ -1254,12 +1253,12 @@ int FixNSCD::unpack_exchange(int nlocal, double *buf)
 }
 
 /* Per atom in restart files: {number of values (LAMMPS' convention), the atom's records in
-   nscd_restart's per-atom format}. */
+   the per-atom format of nscd_restart_blocks.h}. */
 int FixNSCD::pack_restart(int i, double *buf)
 {
   const std::vector<nscd::ImpulseRecord> &records = solver->atom_impulses.of(i);
-  buf[0] = nscd_restart::atom_impulses_values(records.size()) + 1;
-  nscd_restart::write_atom_impulses(records, buf + 1);
+  buf[0] = NSCD_NS::atom_impulses_values(records.size()) + 1;
+  NSCD_NS::write_atom_impulses(records, buf + 1);
   return (int) buf[0];
 }
 
@@ -1272,10 +1271,10 @@ void FixNSCD::unpack_restart(int nlocal, int nth)
   std::vector<nscd::ImpulseRecord> records;
   try {
     if (!(size >= 1.0 && size <= (double) atom->nextra_store - m))
-      throw nscd_restart::Damaged("atom ID " + std::to_string(atom->tag[nlocal]) + " states " +
-                                  std::to_string(size) + " per-atom values for it: the file is damaged");
-    records = nscd_restart::read_atom_impulses(&extra[nlocal][m + 1], (std::size_t) size - 1, atom->tag[nlocal]);
-  } catch (nscd_restart::Damaged &e) {
+      throw NSCD_NS::Damaged("atom ID " + std::to_string(atom->tag[nlocal]) + " states " +
+                             std::to_string(size) + " per-atom values for it: the file is damaged");
+    records = NSCD_NS::read_atom_impulses(&extra[nlocal][m + 1], (std::size_t) size - 1, atom->tag[nlocal]);
+  } catch (NSCD_NS::Damaged &e) {
     error->one(FLERR, "fix nscd {}: the warm start in the restart file cannot be used: {}. To start without "
                "it, define fix nscd with another ID", id, e.what());
   }
@@ -1286,12 +1285,12 @@ void FixNSCD::unpack_restart(int nlocal, int nth)
 
 int FixNSCD::size_restart(int i)
 {
-  return nscd_restart::atom_impulses_values(solver->atom_impulses.of(i).size()) + 1;
+  return NSCD_NS::atom_impulses_values(solver->atom_impulses.of(i).size()) + 1;
 }
 
 int FixNSCD::maxsize_restart()
 {
-  const int mine = nscd_restart::atom_impulses_values(solver->atom_impulses.longest(0, atom->nlocal)) + 1;
+  const int mine = NSCD_NS::atom_impulses_values(solver->atom_impulses.longest(0, atom->nlocal)) + 1;
   int all = mine;
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
   return all;

@@ -39,6 +39,9 @@ struct ImpulseRecord;
 }    // namespace nscd
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
+class NSCDBoundary;
+}    // namespace NSCD_NS
 
 class FixNSCD : public Fix {
  public:
@@ -85,7 +88,7 @@ class FixNSCD : public Fix {
   // step's start, the rest of the step (motion, shares, virial), the warm-start records
   // handed to ghosts' owners; and the sweep exchanges and solver reductions done.
   enum CommKind { COMM_SWEEP, COMM_GHOST_STATE, COMM_STEP, COMM_RECORDS, N_COMM_KINDS };
-  const NSCDCommCount &comm_count() const { return comm_counts; }
+  const NSCD_NS::NSCDCommCount &comm_count() const { return comm_counts; }
   bigint sweep_exchanges() const { return exchanges_run; }
   bigint solver_reductions() const { return reductions_run; }
 
@@ -115,7 +118,7 @@ class FixNSCD : public Fix {
 
   class PairNSCD *pair;
   class AtomVecSpheropolyhedron *avec;
-  std::vector<class NSCDBoundary *> boundaries;
+  std::vector<NSCD_NS::NSCDBoundary *> boundaries;
   std::vector<Fix *> boundary_fixes;       // the fix of each boundary
   size_t pair_count;                 // problem.contacts: pair_count grain pairs, then each
   std::vector<int> boundary_counts;  // boundary's in turn (as of the last solve)
@@ -131,7 +134,7 @@ class FixNSCD : public Fix {
   double values_sent;           //   and the doubles sent with them (counts, places)
   double records_migrated, values_migrated;                // of these, with migrating atoms
   double records_received;          // ghosts' records received from other ranks' ghosts
-  NSCDCommCount comm_counts;
+  NSCD_NS::NSCDCommCount comm_counts;
   bigint exchanges_run, reductions_run;
 
   enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode;

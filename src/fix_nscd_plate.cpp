@@ -38,8 +38,7 @@
 #include <deque>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
-using namespace nscd_contact;
+using namespace NSCD_NS;
 
 namespace {
 enum Output { Z, VZ, REACTION, LOAD, DISPLACEMENT, WINDOW_SINK, PEAK_FORCE, PEAK_DISPLACEMENT, FAILED, FAILURE_LOAD,
@@ -104,9 +103,9 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
   if (narg < 6 || strcmp(arg[4], "mass") != 0)
     error->all(FLERR, "Illegal fix nscd/plate command: expected 'fix "
                "ID group nscd/plate Z mass M [keyword value ...]'");
-  p.z = p.z_start = nscd_args::number(lmp, "fix nscd/plate", "height Z", arg[3]);
+  p.z = p.z_start = NSCD_NS::number(lmp, "fix nscd/plate", "height Z", arg[3]);
   if (!std::isfinite(p.z)) error->all(FLERR, "fix nscd/plate: the height {} must be finite", arg[3]);
-  p.mass = nscd_args::number(lmp, "fix nscd/plate", "mass", arg[5]);
+  p.mass = NSCD_NS::number(lmp, "fix nscd/plate", "mass", arg[5]);
   if (!(p.mass > 0.0) || !std::isfinite(p.mass))
     error->all(FLERR, "fix nscd/plate: mass {} must be positive and finite", p.mass);
   if (p.mass < nscd::kMinBodyMass || p.mass > nscd::kMaxBodyMass)
@@ -114,10 +113,10 @@ FixNSCDPlate::FixNSCDPlate(LAMMPS *lmp, int narg, char **arg) :
                "change the mass unit", p.mass, nscd::kMinBodyMass, nscd::kMaxBodyMass);
   for (int iarg = 6; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
-    const std::string text = nscd_args::keyword_value(
+    const std::string text = NSCD_NS::keyword_value(
         lmp, "fix nscd/plate", narg, arg, iarg,
         {"load", "rate", "gravity", "friction", "restitution", "fail_sink", "fail_window"});
-    const double value = nscd_args::number(lmp, "fix nscd/plate", key, text);
+    const double value = NSCD_NS::number(lmp, "fix nscd/plate", key, text);
     if (!std::isfinite(value))
       error->all(FLERR, "fix nscd/plate: {} {} must be a finite number", key, arg[iarg + 1]);
     if (key == "fail_window") {
@@ -166,7 +165,7 @@ void FixNSCDPlate::setup(int /*vflag*/)
 {
   const double z = plate->z;
   const tagint any_above =
-      nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && atom->x[i][2] >= z; });
+      NSCD_NS::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && atom->x[i][2] >= z; });
   if (any_above)
     error->all(FLERR, "fix nscd/plate {}: atom ID {} is above the plate (z = {}); put the plate "
                "above all grains and wire nodes of its group", id, any_above, z);
@@ -303,18 +302,18 @@ double FixNSCDPlate::compute_vector(int n)
 void FixNSCDPlate::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  nscd_restart::PlateBlock block;
+  NSCD_NS::PlateBlock block;
   block.z = plate->z;
   block.vz = plate->vz;
   block.elapsed = plate->elapsed;
   block.z_start = plate->z_start;
-  nscd_restart::write_block(fp, nscd_restart::plate_block(block));
+  NSCD_NS::write_block(fp, NSCD_NS::plate_block(block));
 }
 
 void FixNSCDPlate::restart(char *bytes)
 {
-  const nscd_restart::PlateBlock block = nscd_checks::read_restart_block(
-      lmp, this, nscd_restart::read_plate_block, bytes,
+  const NSCD_NS::PlateBlock block = NSCD_NS::read_restart_block(
+      lmp, this, NSCD_NS::read_plate_block, bytes,
       "To start from the plate given in the deck, define it with another fix ID");
   plate->z = block.z;
   plate->vz = block.vz;

@@ -33,7 +33,7 @@ FixStyle(nscd/plate,FixNSCDPlate);
 
 namespace LAMMPS_NS {
 
-class FixNSCDPlate : public Fix, public NSCDBoundaryFix {
+class FixNSCDPlate : public Fix, public NSCD_NS::NSCDBoundaryFix {
  public:
   FixNSCDPlate(class LAMMPS *, int, char **);
   ~FixNSCDPlate() override;
@@ -46,7 +46,7 @@ class FixNSCDPlate : public Fix, public NSCDBoundaryFix {
   void restart(char *) override;
   double memory_usage() override;
 
-  NSCDBoundary &boundary() override;
+  NSCD_NS::NSCDBoundary &boundary() override;
 
  private:
   class Plate;    // motion, load, contacts and reaction (fix_nscd_plate.cpp)

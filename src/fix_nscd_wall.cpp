@@ -34,14 +34,13 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
-using namespace nscd_contact;
+using namespace NSCD_NS;
 
 namespace {
 nscd::Vec3 read_vec3(LAMMPS *lmp, const char *what, char **arg)
 {
   nscd::Vec3 v;
-  for (int d = 0; d < 3; d++) v[d] = nscd_args::number(lmp, "fix nscd/wall", fmt::format("{} {}", what, "xyz"[d]), arg[d]);
+  for (int d = 0; d < 3; d++) v[d] = NSCD_NS::number(lmp, "fix nscd/wall", fmt::format("{} {}", what, "xyz"[d]), arg[d]);
   return v;
 }
 
@@ -106,7 +105,7 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
     const nscd::Vec3 a = read_vec3(lmp, "cylinder axis", &arg[7]);
     if (!(a.norm() > 0.0)) error->all(FLERR, "fix nscd/wall: the cylinder axis (0 0 0) has no direction");
     cylinder.axis_direction = a.normalized();
-    cylinder.radius = nscd_args::number(lmp, "fix nscd/wall", "cylinder radius", arg[10]);
+    cylinder.radius = NSCD_NS::number(lmp, "fix nscd/wall", "cylinder radius", arg[10]);
     if (!(cylinder.radius > 0.0))
       error->all(FLERR, "fix nscd/wall: cylinder radius {} must be positive", cylinder.radius);
     iarg = 11;
@@ -127,14 +126,14 @@ int FixNSCDWall::parse_option(int narg, char **arg, int iarg)
 {
   const std::string key = arg[iarg];
   if (key == "friction" && iarg + 1 < narg) {
-    const double friction = nscd_args::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
+    const double friction = NSCD_NS::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
     if (!(friction >= 0.0) || !std::isfinite(friction))
       error->all(FLERR, "fix nscd/wall: friction {} must be finite and >= 0", friction);
     wall->friction = friction;
     return iarg + 2;
   }
   if (key == "restitution" && iarg + 1 < narg) {
-    const double restitution = nscd_args::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
+    const double restitution = NSCD_NS::number(lmp, "fix nscd/wall", key, arg[iarg + 1]);
     if (!(restitution >= 0.0 && restitution <= 1.0))
       error->all(FLERR, "fix nscd/wall: restitution {} must be in [0, 1]", restitution);
     wall->restitution = restitution;
@@ -176,7 +175,7 @@ void FixNSCDWall::init()
    wrong atom. */
 void FixNSCDWall::setup(int /*vflag*/)
 {
-  const tagint any_outside = nscd_checks::lowest_tag_where(
+  const tagint any_outside = NSCD_NS::lowest_tag_where(
       lmp, [&](int i) { return (atom->mask[i] & groupbit) && !wall->inside(vec3(atom->x[i])); });
   if (any_outside)
     error->all(FLERR, "fix nscd/wall {}: the centre of atom ID {} is outside the wall ({}); check its position and the normal's "
@@ -284,17 +283,17 @@ double FixNSCDWall::compute_vector(int n)
 void FixNSCDWall::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  nscd_restart::WallBlock block;
+  NSCD_NS::WallBlock block;
   block.cylinder = wall->kind == Wall::Kind::cylinder;
   const nscd::Vec3 &p = wall->reference_point();
   block.point = {p.x(), p.y(), p.z()};
-  nscd_restart::write_block(fp, nscd_restart::wall_block(block));
+  NSCD_NS::write_block(fp, NSCD_NS::wall_block(block));
 }
 
 void FixNSCDWall::restart(char *bytes)
 {
-  const nscd_restart::WallBlock block = nscd_checks::read_restart_block(
-      lmp, this, nscd_restart::read_wall_block, bytes,
+  const NSCD_NS::WallBlock block = NSCD_NS::read_restart_block(
+      lmp, this, NSCD_NS::read_wall_block, bytes,
       "To start from the position given in the deck, define the wall with another fix ID");
   if (block.cylinder != (wall->kind == Wall::Kind::cylinder)) {
     if (comm->me == 0)

@@ -32,7 +32,7 @@ FixStyle(nscd/wall,FixNSCDWall);
 
 namespace LAMMPS_NS {
 
-class FixNSCDWall : public Fix, public NSCDBoundaryFix {
+class FixNSCDWall : public Fix, public NSCD_NS::NSCDBoundaryFix {
  public:
   FixNSCDWall(class LAMMPS *, int, char **);
   ~FixNSCDWall() override;
@@ -46,7 +46,7 @@ class FixNSCDWall : public Fix, public NSCDBoundaryFix {
   void restart(char *) override;
   double memory_usage() override;
 
-  NSCDBoundary &boundary() override;
+  NSCD_NS::NSCDBoundary &boundary() override;
 
  private:
   class Wall;    // geometry, motion, contacts and reaction (fix_nscd_wall.cpp)

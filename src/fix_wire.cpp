@@ -56,8 +56,7 @@
 #include <map>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
-using namespace nscd_contact;
+using namespace NSCD_NS;
 using namespace FixConst;
 using nscd::Vec3;
 namespace wire = nscd::wire;
@@ -190,13 +189,13 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
     requested_dt_sp = 0.0;
     fastest_stable = strcmp(value, "stable") == 0;
     const bool automatic = fastest_stable || strcmp(value, "auto") == 0;    // 0 inside: choose
-    requested_substeps = automatic ? 0 : (int) nscd_args::whole(lmp, "fix wire", key, value, INT_MIN, INT_MAX);
+    requested_substeps = automatic ? 0 : (int) NSCD_NS::whole(lmp, "fix wire", key, value, INT_MIN, INT_MAX);
     if (!automatic && requested_substeps < 1)
       error->all(FLERR, "fix wire: substeps {} must be >= 1 (or auto, or stable)", requested_substeps);
     return;
   }
   const auto option = plain.find(key);
-  const double x = nscd_args::number(lmp, "fix wire", key, value);
+  const double x = NSCD_NS::number(lmp, "fix wire", key, value);
   if (!(x >= 0.0) || !std::isfinite(x)) error->all(FLERR, "fix wire: {} = {} must be a finite number >= 0", key, x);
   if (key == "safety" && !(x > 0.0 && x <= 1.0)) error->all(FLERR, "fix wire: safety {} must be in (0, 1]", x);
   if (key == "skin" && !(x > 0.0)) error->all(FLERR, "fix wire: skin {} must be a finite number > 0", x);
@@ -223,8 +222,8 @@ void FixWire::parse_grain_friction(int narg, char **arg, int &iarg)
                "0.2'), got {}", narg - iarg - 1);
   GrainFriction g{};
   utils::bounds(FLERR, arg[iarg + 1], 1, atom->ntypes, g.lo, g.hi, error);
-  g.mu_s = nscd_args::number(lmp, "fix wire", "grain_friction mu_s", arg[iarg + 2]);
-  g.mu_d = nscd_args::number(lmp, "fix wire", "grain_friction mu_d", arg[iarg + 3]);
+  g.mu_s = NSCD_NS::number(lmp, "fix wire", "grain_friction mu_s", arg[iarg + 2]);
+  g.mu_d = NSCD_NS::number(lmp, "fix wire", "grain_friction mu_d", arg[iarg + 3]);
   if (!(g.mu_s >= 0.0 && std::isfinite(g.mu_s)) || !(g.mu_d >= 0.0 && g.mu_d <= g.mu_s))
     error->all(FLERR, "fix wire: grain_friction {}: mu_s {} and mu_d {} must be finite with 0 <= mu_d <= mu_s",
                arg[iarg + 1], g.mu_s, g.mu_d);
@@ -253,15 +252,15 @@ void *FixWire::extract(const char *name, int &dim)
 
 void FixWire::init()
 {
-  nscd_checks::refuse_second_instance<FixWire>(lmp, this, "one fix handles all wire nodes and their contacts");
-  nscd_checks::refuse_migration_before(lmp, this, "its contacts' friction memories");
+  NSCD_NS::refuse_second_instance<FixWire>(lmp, this, "one fix handles all wire nodes and their contacts");
+  NSCD_NS::refuse_migration_before(lmp, this, "its contacts' friction memories");
   if (update->whichflag == 2)
     error->all(FLERR, "fix wire cannot take part in 'minimize'; unfix it "
                "before minimize, or relax the wire with a damped run ('damp')");
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "fix wire does not work with 'run_style {}'; use 'run_style verlet' "
                "(option 'substeps' sets the wire's inner steps)", update->integrate_style);
-  nscd_units::require_plain_mechanics(lmp, "fix wire");
+  NSCD_NS::require_plain_mechanics(lmp, "fix wire");
   if (!force->newton_bond)
     error->all(FLERR, "fix wire needs newton_bond on (each element once in the bond list); use "
                "'newton on' or 'newton off on'");
@@ -287,7 +286,7 @@ void FixWire::check_partners()
     error->all(FLERR, "fix wire needs angle_style wire for its joints (angle_style is '{}')",
                force->angle_style ? force->angle_style : "none");
   const tagint any_grain =
-      nscd_checks::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] != 0; });
+      NSCD_NS::lowest_tag_where(lmp, [&](int i) { return (atom->mask[i] & groupbit) && avec->shape[i] != 0; });
   if (any_grain)
     error->all(FLERR, "fix wire: atom ID {} in group '{}' is a grain (shape != 0); the "
                "group must hold wire nodes (shape 0) only", any_grain, group->names[igroup]);

@@ -47,11 +47,14 @@ namespace wire {
 }    // namespace nscd
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 // A wire element that broke (option strength): node IDs, tension, midpoint.
 struct WireBreak {
   double id_a, id_b, tension, x, y, z;
 };
+
+}    // namespace NSCD_NS
 
 class FixWire : public Fix {
  public:
@@ -104,7 +107,7 @@ class FixWire : public Fix {
   // doc/scaling.md "Counted"): the subcycle's node exchanges and the once-a-step ones; the
   // substeps run; the friction memories (and their doubles) packed with migrating atoms.
   enum CommKind { COMM_SUBSTEP, COMM_STEP, N_COMM_KINDS };
-  const NSCDCommCount &comm_count() const { return comm_counts; }
+  const NSCD_NS::NSCDCommCount &comm_count() const { return comm_counts; }
   bigint substeps() const { return substeps_run; }
   double memories_migrated() const { return migrated[0]; }
   double memory_values_migrated() const { return migrated[1]; }
@@ -161,13 +164,13 @@ class FixWire : public Fix {
 
   enum class Comm { node_state, node_position, node_force, grain_velocity, grain_force, node_origin } comm_mode;
   bool counting_comm;                        // the subcycle's communication: counted
-  NSCDCommCount comm_counts;
+  NSCD_NS::NSCDCommCount comm_counts;
   std::array<double, 2> migrated;            // memories packed with migrating atoms, their doubles
   std::vector<double> grain_force_buffer;    // 6 per local atom
   // The subcycle's exchange of node copies on several ranks (one rank: LAMMPS' comm, which
   // only copies within the rank there): planned after each neighbour build from each ghost
   // node's origin (shift of its image; owner rank, owner's node index, 0), 6 per local atom.
-  NSCDCopyExchange node_copies;
+  NSCD_NS::NSCDCopyExchange node_copies;
   std::vector<double> origin_buffer;
   bool direct_exchange() const;
   void plan_copy_exchange();
@@ -190,8 +193,8 @@ class FixWire : public Fix {
   bool topology_changed;            // elements broke: gather the topology after the next build
   bool specials_stale;              // elements broke: rebuild the special lists (pre_exchange)
   void check_element_tensions();
-  void remove_from_topology(const std::vector<struct WireBreak> &broken);
-  void report_breaks(const std::vector<struct WireBreak> &broken);
+  void remove_from_topology(const std::vector<NSCD_NS::WireBreak> &broken);
+  void report_breaks(const std::vector<NSCD_NS::WireBreak> &broken);
   bool warned_fast_motion;
 
   // fix wire's own timing of the run (printed after it): seconds, node-substeps, doubles sent

@@ -37,6 +37,7 @@
 #include <cstdio>
 
 using namespace LAMMPS_NS;
+using namespace NSCD_NS;
 
 namespace {
 using Break = WireBreak;

@@ -39,6 +39,7 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using namespace NSCD_NS;
 using nscd::Vec3;
 namespace wire = nscd::wire;
 
@@ -208,15 +209,15 @@ int FixWire::unpack_exchange(int nlocal, double *buf)
 }
 
 /* Per atom in restart files: {number of values (LAMMPS' convention), the Gear state, the
-   atom's friction memories in nscd_restart's per-atom format}. */
+   atom's friction memories in the per-atom format of nscd_restart_blocks.h}. */
 int FixWire::size_restart(int i)
 {
-  return 1 + GEAR_COLUMNS + nscd_restart::atom_memories_values(lib->atom_memories.of(i).size());
+  return 1 + GEAR_COLUMNS + NSCD_NS::atom_memories_values(lib->atom_memories.of(i).size());
 }
 
 int FixWire::maxsize_restart()
 {
-  const int mine = 1 + GEAR_COLUMNS + nscd_restart::atom_memories_values(lib->atom_memories.longest(0, atom->nlocal));
+  const int mine = 1 + GEAR_COLUMNS + NSCD_NS::atom_memories_values(lib->atom_memories.longest(0, atom->nlocal));
   int all = mine;
   MPI_Allreduce(&mine, &all, 1, MPI_INT, MPI_MAX, world);
   return all;
@@ -226,7 +227,7 @@ int FixWire::pack_restart(int i, double *buf)
 {
   buf[0] = size_restart(i);    // LAMMPS convention: the count includes this slot
   std::copy(gear[i], gear[i] + GEAR_COLUMNS, buf + 1);
-  nscd_restart::write_atom_memories(lib->atom_memories.of(i), buf + 1 + GEAR_COLUMNS);
+  NSCD_NS::write_atom_memories(lib->atom_memories.of(i), buf + 1 + GEAR_COLUMNS);
   return (int) buf[0];
 }
 
@@ -238,7 +239,7 @@ void FixWire::unpack_restart(int nlocal, int nth)
 {
   const double *extra = atom->extra[nlocal];
   const int width = atom->nextra_store;
-  constexpr int gear_only = 1 + GEAR_COLUMNS, least_with_memories = gear_only + nscd_restart::atom_memories_values(0);
+  constexpr int gear_only = 1 + GEAR_COLUMNS, least_with_memories = gear_only + NSCD_NS::atom_memories_values(0);
   int m = 0;
   for (int k = 0; k <= nth; k++) {
     const double count = m < width ? extra[m] : 0.0;
@@ -261,8 +262,8 @@ void FixWire::unpack_restart(int nlocal, int nth)
   if (extra[m] == gear_only) return;    // wire format 3 or older: restart() kept the atom's memories
   try {
     const auto values = (std::size_t) extra[m] - gear_only;
-    lib->atom_memories.set(nlocal, nscd_restart::read_atom_memories(state + GEAR_COLUMNS, values, atom->tag[nlocal]));
-  } catch (nscd_restart::Damaged &e) {
+    lib->atom_memories.set(nlocal, NSCD_NS::read_atom_memories(state + GEAR_COLUMNS, values, atom->tag[nlocal]));
+  } catch (NSCD_NS::Damaged &e) {
     error->one(FLERR, "fix wire {}: the friction memories in the restart file "
                "cannot be used: {}; see doc/fix_wire.md, Errors", id, e.what());
   }
@@ -372,22 +373,22 @@ double FixWire::memory_usage()
 void FixWire::write_restart(FILE *fp)
 {
   keep_memories_with_atoms();
-  nscd_restart::WireBlock block;
+  NSCD_NS::WireBlock block;
   block.dt = state_dt;
-  if (comm->me == 0) nscd_restart::write_block(fp, nscd_restart::wire_block(block));
+  if (comm->me == 0) NSCD_NS::write_block(fp, NSCD_NS::wire_block(block));
 }
 
 /* read_restart hands every rank the block written above (without its size). A file of
    format 3 holds every contact's memory here: each rank keeps those of its own nodes. */
 void FixWire::restart(char *bytes)
 {
-  nscd_restart::WireBlock block = nscd_checks::read_restart_block(
-      lmp, this, nscd_restart::read_wire_block, bytes,
+  NSCD_NS::WireBlock block = NSCD_NS::read_restart_block(
+      lmp, this, NSCD_NS::read_wire_block, bytes,
       "To start without the stored friction memories, define fix wire with another ID");
   state_dt = block.dt;
   if (!block.memories_read) {
-    nscd_checks::warn_format_not_read(lmp, this, "the wire", block.format,
-                                      ": its contacts' friction springs are not read (they start again from zero)");
+    NSCD_NS::warn_format_not_read(lmp, this, "the wire", block.format,
+                                  ": its contacts' friction springs are not read (they start again from zero)");
     return;
   }
   if (!block.memories.empty()) file_with_owned_nodes(block.memories);

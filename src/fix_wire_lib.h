@@ -29,6 +29,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 // A wall or the plate as the wire's contact model sees it.
 struct BoundaryView final : nscd::wire::NodeBoundary {
@@ -42,6 +43,8 @@ struct BoundaryView final : nscd::wire::NodeBoundary {
   nscd::Vec3 surface_velocity() const override { return boundary->surface_velocity(); }
 };
 
+}    // namespace NSCD_NS
+
 struct FixWire::Lib : nscd::wire::Exchange {
   FixWire *fix;
   nscd::wire::SoftContactLaw law;
@@ -50,11 +53,11 @@ struct FixWire::Lib : nscd::wire::Exchange {
   std::array<double, 6> corrector = nscd::wire::gear5_corrector_coefficients(nscd::wire::GearCorrector::ThreeSixteenths);
   nscd::wire::WireStep step;    // owned nodes, then their ghost copies; this rank's elements and joints
   nscd::wire::StepTiming timing;
-  std::vector<BoundaryView> boundaries;
+  std::vector<NSCD_NS::BoundaryView> boundaries;
   std::vector<nscd::Vec3> step_start;
   // The friction memories kept with the atoms (owned atoms, by the key's first ID) while
   // atoms move between ranks and in restart files; memories_with_atoms says when.
-  NSCDAtomRecords<nscd::wire::StoredContact> atom_memories;
+  NSCD_NS::NSCDAtomRecords<nscd::wire::StoredContact> atom_memories;
   explicit Lib(FixWire *f) : fix(f) {}
   // The subcycle's communication, wire nodes only: positions and velocities to the ghost
   // copies, their forces back to the owners.

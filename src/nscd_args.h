@@ -34,7 +34,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
-namespace nscd_args {
+namespace NSCD_NS {
 
 // The value of `key` given as `text` to the command `where` (e.g. "fix nscd", "tolerance").
 inline double number(LAMMPS *lmp, const std::string &where, const std::string &key, const std::string &text)
@@ -89,7 +89,7 @@ inline std::string keyword_value(LAMMPS *lmp, const std::string &where, int narg
   return arg[iarg + 1];
 }
 
-}    // namespace nscd_args
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

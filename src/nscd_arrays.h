@@ -14,7 +14,7 @@
 
 /* Conversions between LAMMPS' per-atom arrays (double[3], double[4]) and the Eigen types of
    lib/, shared by every style of the package; a .cpp names them with
-   `using namespace nscd_arrays;`. */
+   `using namespace NSCD_NS;`, the namespace of the package's helpers. */
 
 #ifndef LMP_NSCD_ARRAYS_H
 #define LMP_NSCD_ARRAYS_H
@@ -22,7 +22,7 @@
 #include "math/types.h"
 
 namespace LAMMPS_NS {
-namespace nscd_arrays {
+namespace NSCD_NS {
 
 inline nscd::Vec3 vec3(const double *a)
 {
@@ -48,7 +48,7 @@ inline void add_to(double *a, const nscd::Vec3 &v)
   a[2] += v.z();
 }
 
-}    // namespace nscd_arrays
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

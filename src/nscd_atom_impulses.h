@@ -26,11 +26,13 @@
 #include "solver/warm_start.h"
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 using NSCDAtomImpulses = NSCDAtomRecords<nscd::ImpulseRecord>;
-static_assert(NSCDAtomImpulses::VALUES_PER_RECORD == nscd_restart::VALUES_PER_IMPULSE_RECORD,
+static_assert(NSCDAtomImpulses::VALUES_PER_RECORD == NSCD_NS::VALUES_PER_IMPULSE_RECORD,
               "an impulse record's doubles in restart files and in exchange buffers");
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

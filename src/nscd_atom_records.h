@@ -31,6 +31,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 template <class Record> class NSCDAtomRecords {
   static_assert(std::is_trivially_copyable<Record>::value && sizeof(Record) % sizeof(double) == 0,
@@ -118,6 +119,7 @@ template <class Record> class NSCDAtomRecords {
   std::vector<std::vector<Record>> lists;
 };
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

@@ -27,6 +27,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 class NSCDBoundary {
  public:
@@ -81,6 +82,7 @@ class NSCDBoundary {
   bigint wire_force_step;
 };
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

@@ -21,6 +21,7 @@
 #define LMP_NSCD_BOUNDARY_FIX_H
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 class NSCDBoundary;
 
@@ -34,6 +35,7 @@ class NSCDBoundaryFix {
   ~NSCDBoundaryFix() = default;
 };
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

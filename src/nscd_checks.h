@@ -36,7 +36,7 @@
 #include <algorithm>
 
 namespace LAMMPS_NS {
-namespace nscd_checks {
+namespace NSCD_NS {
 
 // The lowest of the ranks' `mine` (an atom ID, or MAXTAGINT for none). Collective.
 inline tagint lowest_tag_of_all(MPI_Comm world, tagint mine)
@@ -89,11 +89,11 @@ inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *wha
 // it) if it is damaged.
 template <class Read>
 auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *way_out)
-    -> decltype(read(bytes, nscd_restart::UNKNOWN_SIZE))
+    -> decltype(read(bytes, NSCD_NS::UNKNOWN_SIZE))
 {
   try {
-    return read(bytes, nscd_restart::UNKNOWN_SIZE);
-  } catch (nscd_restart::Damaged &e) {
+    return read(bytes, NSCD_NS::UNKNOWN_SIZE);
+  } catch (NSCD_NS::Damaged &e) {
     lmp->error->all(FLERR, "fix {} {}: its restart block cannot be used: {}. {}", fix->style, fix->id, e.what(),
                     way_out);
   }
@@ -109,7 +109,7 @@ inline void warn_format_not_read(LAMMPS *lmp, const Fix *fix, const char *what, 
                         "check{}", fix->style, fix->id, what, format, not_read);
 }
 
-}    // namespace nscd_checks
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

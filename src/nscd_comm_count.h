@@ -29,6 +29,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 class NSCDCommCount {
  public:
@@ -78,6 +79,7 @@ class NSCDCommCount {
   const double *last_packed;
 };
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

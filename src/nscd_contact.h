@@ -14,7 +14,7 @@
 
 /* One place that turns a geometric contact point into a contact of the NSCD problem, for
    every style that finds contacts (pair_style nscd, fix nscd/wall, fix nscd/plate), in the
-   namespace nscd_contact. */
+   namespace of the package's helpers, NSCD_NS. */
 
 #ifndef LMP_NSCD_CONTACT_H
 #define LMP_NSCD_CONTACT_H
@@ -28,7 +28,7 @@
 #include <cstdint>
 
 namespace LAMMPS_NS {
-namespace nscd_contact {
+namespace NSCD_NS {
 
 // Speculative activation. Bodies closing at up to `closing_speed` (relative speed of their
 // centres plus each one's spin times its bounding radius) close a gap of up to that times
@@ -86,7 +86,7 @@ inline std::int64_t boundary_tag(const char *fix_id)
   return -(std::int64_t) (h >> 2) - 1;
 }
 
-}    // namespace nscd_contact
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

@@ -28,6 +28,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 struct ContactPair {
   std::int64_t tag_i = 0;    // atom ID of grain i (the normals point from j to i)
@@ -99,6 +100,7 @@ std::vector<ContactPair> group_contact_pairs(const std::vector<nscd::Contact> &c
   return pairs;
 }
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

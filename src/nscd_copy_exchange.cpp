@@ -21,6 +21,7 @@
 #include <utility>
 
 using namespace LAMMPS_NS;
+using namespace NSCD_NS;
 
 /* The copies grouped by owner (other ranks, in rank order; within a rank in copy order), a
    count to every rank (MPI_Alltoall), then each holder's list of wanted indices to the owner,

@@ -36,6 +36,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 class NSCDCopyExchange {
  public:
@@ -86,6 +87,7 @@ class NSCDCopyExchange {
                     int kind);
 };
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

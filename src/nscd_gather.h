@@ -23,6 +23,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 // Every rank's `mine`, concatenated in rank order: on every rank (to_all_ranks) or on rank 0
 // only (the others get an empty vector). Collective over `world`.
@@ -47,6 +48,7 @@ std::vector<Record> gather_records(const std::vector<Record> &mine, MPI_Comm wor
   return all;
 }
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

@@ -28,6 +28,7 @@
 #include <string>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 // Before creating: new atoms take the slots of the last run's ghosts (as in create_atoms);
 // the next run's setup rebuilds them.
@@ -70,6 +71,7 @@ inline void finish_new_atoms(LAMMPS *lmp, bigint natoms_before, int nlocal_befor
   }
 }
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

@@ -42,7 +42,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
-namespace nscd_restart {
+namespace NSCD_NS {
 
 constexpr std::int32_t MAGIC = 0x4e534344;    // "NSCD" (as bytes on a little-endian machine: "DCSN")
 constexpr std::size_t MARK_BYTES = 2 * sizeof(std::int32_t);                     // {MAGIC, version}
@@ -171,7 +171,7 @@ class BlockReader {
 
 };
 
-}    // namespace nscd_restart
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

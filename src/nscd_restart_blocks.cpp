@@ -22,7 +22,7 @@
 #include <type_traits>
 
 namespace LAMMPS_NS {
-namespace nscd_restart {
+namespace NSCD_NS {
 namespace {
 
 static_assert(sizeof(nscd::ImpulseRecord) == 48, "fix nscd's restart record layout changed");
@@ -369,5 +369,5 @@ void check_pair_coefficient(const PairCoefficient &c)
     throw Damaged("a restitution coefficient is " + number(c.restitution) + ", outside [0, 1]: the settings are damaged");
 }
 
-}    // namespace nscd_restart
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS

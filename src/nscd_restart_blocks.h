@@ -15,7 +15,7 @@
 /* The restart formats of this package's styles, written and read in one place
    (nscd_restart.h has the header and the bounded reader). Each reader checks every count
    against the block's size and every value against what the style itself accepts, and
-   throws nscd_restart::Damaged naming the problem; the styles add their name and ID.
+   throws NSCD_NS::Damaged naming the problem; the styles add their name and ID.
    Plain C++ (no LAMMPS header): tests/fuzz reads blocks with these functions. */
 
 #ifndef LMP_NSCD_RESTART_BLOCKS_H
@@ -32,7 +32,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
-namespace nscd_restart {
+namespace NSCD_NS {
 
 // ---- fix nscd: the timestep of the warm-start impulses (and, up to format 3, the impulses).
 // Format 4 (sized): {int64 count, double dt (the timestep they were solved with, 0 if not
@@ -158,7 +158,7 @@ template <class Source> PairCoefficient read_pair_coefficient(Source &in)
   return c;
 }
 
-}    // namespace nscd_restart
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

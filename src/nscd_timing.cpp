@@ -21,6 +21,7 @@
 #include <numeric>
 
 using namespace LAMMPS_NS;
+using namespace NSCD_NS;
 
 NSCDPartTimes::NSCDPartTimes(std::vector<std::string> part_names) :
     names(std::move(part_names)), seconds(names.size(), 0.0)

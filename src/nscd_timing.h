@@ -24,6 +24,7 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
 
 class NSCDPartTimes {
  public:
@@ -45,6 +46,7 @@ class NSCDPartTimes {
   std::vector<double> seconds;
 };
 
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

@@ -29,7 +29,7 @@
 #include "update.h"
 
 namespace LAMMPS_NS {
-namespace nscd_units {
+namespace NSCD_NS {
 
 inline void require_plain_mechanics(LAMMPS *lmp, const char *style)
 {
@@ -38,7 +38,7 @@ inline void require_plain_mechanics(LAMMPS *lmp, const char *style)
                   "cgs, micro or nano (doc/units.md)", style, lmp->update->unit_style, lmp->force->ftm2v);
 }
 
-}    // namespace nscd_units
+}    // namespace NSCD_NS
 }    // namespace LAMMPS_NS
 
 #endif

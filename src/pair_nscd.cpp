@@ -44,8 +44,7 @@
 #include <utility>
 
 using namespace LAMMPS_NS;
-using namespace nscd_arrays;
-using namespace nscd_contact;
+using namespace NSCD_NS;
 
 struct PairNSCD::Found {
   std::vector<nscd::Contact> contacts;
@@ -112,9 +111,9 @@ void PairNSCD::settings(int narg, char **arg)
   };
   for (int iarg = 0; iarg < narg; iarg += 2) {
     // (the text as given in the messages: older LAMMPS parse 1e400 as inf without a word)
-    const std::string text = nscd_args::keyword_value(lmp, "pair_style nscd", narg, arg, iarg,
-                                                      {"activation", "activation/fraction", "reach", "reach/fraction"});
-    const double value = nscd_args::number(lmp, "pair_style nscd", arg[iarg], text);
+    const std::string text = NSCD_NS::keyword_value(lmp, "pair_style nscd", narg, arg, iarg,
+                                                    {"activation", "activation/fraction", "reach", "reach/fraction"});
+    const double value = NSCD_NS::number(lmp, "pair_style nscd", arg[iarg], text);
     if (strcmp(arg[iarg], "activation") == 0) {
       once(activation_as, arg[iarg], arg[iarg + 1]);
       if (!(value >= 0.0) || !std::isfinite(value))
@@ -122,9 +121,9 @@ void PairNSCD::settings(int narg, char **arg)
       activation_given = value;
     } else if (strcmp(arg[iarg], "activation/fraction") == 0) {
       once(activation_as, arg[iarg], arg[iarg + 1]);
-      if (!(value >= 0.0 && value <= nscd_restart::MAX_ACTIVATION_FRACTION))
+      if (!(value >= 0.0 && value <= NSCD_NS::MAX_ACTIVATION_FRACTION))
         error->all(FLERR, "pair_style nscd: activation/fraction {} must be in [0, {}]; for fast "
-                   "grains lower the timestep", value, nscd_restart::MAX_ACTIVATION_FRACTION);
+                   "grains lower the timestep", value, NSCD_NS::MAX_ACTIVATION_FRACTION);
       activation_given = -1.0;
       activation_fraction = value;
     } else if (strcmp(arg[iarg], "reach") == 0) {
@@ -134,9 +133,9 @@ void PairNSCD::settings(int narg, char **arg)
       reach_given = value;
     } else if (strcmp(arg[iarg], "reach/fraction") == 0) {
       once(reach_as, arg[iarg], arg[iarg + 1]);
-      if (!(value >= 0.0 && value <= nscd_restart::MAX_REACH_FRACTION))
+      if (!(value >= 0.0 && value <= NSCD_NS::MAX_REACH_FRACTION))
         error->all(FLERR, "pair_style nscd: reach/fraction {} must be in [0, {}] (a multiple of the "
-                   "smallest grain's bounding radius)", value, nscd_restart::MAX_REACH_FRACTION);
+                   "smallest grain's bounding radius)", value, NSCD_NS::MAX_REACH_FRACTION);
       reach_given = -1.0;
       reach_fraction = value;
     }
@@ -153,14 +152,14 @@ void PairNSCD::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const double friction_one = nscd_args::number(lmp, "pair_coeff nscd", "friction", arg[2]);
+  const double friction_one = NSCD_NS::number(lmp, "pair_coeff nscd", "friction", arg[2]);
   if (!(friction_one >= 0.0) || !std::isfinite(friction_one))
     error->all(FLERR, "pair_coeff nscd: friction coefficient {} must be finite and >= 0", friction_one);
   double restitution_one = 0.0;
   if (narg == 5) {
     if (strcmp(arg[3], "restitution") != 0)
       error->all(FLERR, "pair_coeff nscd: unknown keyword '{}' (expected restitution)", arg[3]);
-    restitution_one = nscd_args::number(lmp, "pair_coeff nscd", "restitution", arg[4]);
+    restitution_one = NSCD_NS::number(lmp, "pair_coeff nscd", "restitution", arg[4]);
     if (!(restitution_one >= 0.0 && restitution_one <= 1.0))
       error->all(FLERR, "pair_coeff nscd: restitution {} must be in [0, 1]", restitution_one);
   }
@@ -308,14 +307,14 @@ void PairNSCD::write_restart(FILE *fp)
   write_restart_settings(fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      const std::string bytes = nscd_restart::pair_coefficient_bytes({setflag[i][j], mu[i][j], restitution_coeff[i][j]});
+      const std::string bytes = NSCD_NS::pair_coefficient_bytes({setflag[i][j], mu[i][j], restitution_coeff[i][j]});
       fwrite(bytes.data(), 1, bytes.size(), fp);
     }
 }
 
 namespace {
-// The pair's part of a restart file, read by rank 0 as nscd_restart's readers expect: the
-// end of the file is a damaged block, not LAMMPS' generic "unexpected end of file".
+// The pair's part of a restart file, read by rank 0 as nscd_restart_blocks.h's readers expect:
+// the end of the file is a damaged block, not LAMMPS' generic "unexpected end of file".
 class RestartFile {
  public:
   explicit RestartFile(FILE *fp) : fp_(fp) {}
@@ -323,7 +322,7 @@ class RestartFile {
   {
     std::int32_t mark[2];
     take(mark, sizeof(mark), "its mark and format number");
-    return nscd_restart::version_of_mark(mark);
+    return NSCD_NS::version_of_mark(mark);
   }
   template <class T> T value(const char *what)
   {
@@ -337,7 +336,7 @@ class RestartFile {
   void take(void *to, std::size_t n, const char *what)
   {
     if (fread(to, 1, n, fp_) != n)
-      throw nscd_restart::Damaged(std::string("the file ends inside ") + what + ": it is cut short");
+      throw NSCD_NS::Damaged(std::string("the file ends inside ") + what + ": it is cut short");
   }
 };
 }    // namespace
@@ -348,14 +347,14 @@ void PairNSCD::read_restart(FILE *fp)
   read_restart_settings(fp);
   allocate();
   const int n = atom->ntypes;
-  std::vector<nscd_restart::PairCoefficient> all;
+  std::vector<NSCD_NS::PairCoefficient> all;
   std::string problem;
   if (comm->me == 0) {
     RestartFile in(fp);
     for (int i = 1; i <= n && problem.empty(); i++)
       for (int j = i; j <= n && problem.empty(); j++) try {
-          all.push_back(nscd_restart::read_pair_coefficient(in));
-        } catch (nscd_restart::Damaged &e) {
+          all.push_back(NSCD_NS::read_pair_coefficient(in));
+        } catch (NSCD_NS::Damaged &e) {
           problem = fmt::format("type pair {} {}: {}", i, j, e.what());
         }
   }
@@ -372,20 +371,20 @@ void PairNSCD::read_restart(FILE *fp)
 
 void PairNSCD::write_restart_settings(FILE *fp)
 {
-  const std::string bytes = nscd_restart::pair_settings_bytes({activation_given, activation_fraction, reach_given,
-                                                              reach_fraction});
+  const std::string bytes = NSCD_NS::pair_settings_bytes({activation_given, activation_fraction, reach_given,
+                                                         reach_fraction});
   fwrite(bytes.data(), 1, bytes.size(), fp);
 }
 
 void PairNSCD::read_restart_settings(FILE *fp)
 {
-  nscd_restart::PairSettings s;
+  NSCD_NS::PairSettings s;
   std::string problem;
   if (comm->me == 0) {
     RestartFile in(fp);
     try {
-      s = nscd_restart::read_pair_settings(in);
-    } catch (nscd_restart::Damaged &e) {
+      s = NSCD_NS::read_pair_settings(in);
+    } catch (NSCD_NS::Damaged &e) {
       problem = e.what();
     }
   }

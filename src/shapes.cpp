@@ -105,8 +105,8 @@ void Shapes::random(int narg, char **arg)
   if (narg < 3 || strcmp(arg[1], "seed") != 0)
     error->all(FLERR, "Illegal shapes random command: expected "
                "'shapes random N seed SEED [keyword values ...]'");
-  const bigint requested = nscd_args::whole(lmp, "shapes random", "count", arg[0]);
-  const bigint seed = nscd_args::whole(lmp, "shapes random", "seed", arg[2]);
+  const bigint requested = NSCD_NS::whole(lmp, "shapes random", "count", arg[0]);
+  const bigint seed = NSCD_NS::whole(lmp, "shapes random", "seed", arg[2]);
   const int room = nscd::ShapeLibrary::kMaxShapes - avec->shapes().size();
   if (requested < 1 || requested > room)
     error->all(FLERR, "shapes random: count {} must be between 1 and {} ({} shapes at most, {} loaded); reuse "
@@ -121,8 +121,8 @@ void Shapes::random(int narg, char **arg)
     };
     if (key == "vertices") {
       need(2);
-      const bigint lo = nscd_args::whole(lmp, "shapes random", "vertices NMIN", arg[iarg + 1]);
-      const bigint hi = nscd_args::whole(lmp, "shapes random", "vertices NMAX", arg[iarg + 2]);
+      const bigint lo = NSCD_NS::whole(lmp, "shapes random", "vertices NMIN", arg[iarg + 1]);
+      const bigint hi = NSCD_NS::whole(lmp, "shapes random", "vertices NMAX", arg[iarg + 2]);
       if (lo < 4 || hi < lo || hi > 10000)
         error->all(FLERR, "shapes random: vertices {} {} must satisfy 4 <= NMIN <= NMAX <= 10000",
                    lo, hi);
@@ -131,17 +131,17 @@ void Shapes::random(int narg, char **arg)
       iarg += 3;
     } else if (key == "size") {
       need(2);
-      params.min_diameter = nscd_args::number(lmp, "shapes random", "size DMIN", arg[iarg + 1]);
-      params.max_diameter = nscd_args::number(lmp, "shapes random", "size DMAX", arg[iarg + 2]);
+      params.min_diameter = NSCD_NS::number(lmp, "shapes random", "size DMIN", arg[iarg + 1]);
+      params.max_diameter = NSCD_NS::number(lmp, "shapes random", "size DMAX", arg[iarg + 2]);
       iarg += 3;
     } else if (key == "axes") {
       need(2);
-      params.ratio_b = nscd_args::number(lmp, "shapes random", "axes B/A", arg[iarg + 1]);
-      params.ratio_c = nscd_args::number(lmp, "shapes random", "axes C/A", arg[iarg + 2]);
+      params.ratio_b = NSCD_NS::number(lmp, "shapes random", "axes B/A", arg[iarg + 1]);
+      params.ratio_c = NSCD_NS::number(lmp, "shapes random", "axes C/A", arg[iarg + 2]);
       iarg += 3;
     } else if (key == "radius") {
       need(1);
-      params.radius = nscd_args::number(lmp, "shapes random", "radius", arg[iarg + 1]);
+      params.radius = NSCD_NS::number(lmp, "shapes random", "radius", arg[iarg + 1]);
       iarg += 2;
     } else {
       error->all(FLERR, "shapes random: unknown keyword '{}' (expected vertices, size, axes, "
@@ -242,9 +242,9 @@ void Shapes::assign(int narg, char **arg)
     if (key == "shape" && iarg + 1 < narg && strcmp(arg[iarg + 1], "random") == 0) {
       need(4);
       shape_mode = RANDOM;
-      shape_lo = (int) nscd_args::whole(lmp, "shapes assign", "shape random IMIN", arg[iarg + 2], INT_MIN, INT_MAX);
-      shape_hi = (int) nscd_args::whole(lmp, "shapes assign", "shape random IMAX", arg[iarg + 3], INT_MIN, INT_MAX);
-      shape_seed = nscd_args::whole(lmp, "shapes assign", "shape random SEED", arg[iarg + 4]);
+      shape_lo = (int) NSCD_NS::whole(lmp, "shapes assign", "shape random IMIN", arg[iarg + 2], INT_MIN, INT_MAX);
+      shape_hi = (int) NSCD_NS::whole(lmp, "shapes assign", "shape random IMAX", arg[iarg + 3], INT_MIN, INT_MAX);
+      shape_seed = NSCD_NS::whole(lmp, "shapes assign", "shape random SEED", arg[iarg + 4]);
       if (shape_lo > shape_hi)
         error->all(FLERR, "shapes assign: shape random {} {}: IMIN must not exceed IMAX",
                    shape_lo, shape_hi);
@@ -252,29 +252,29 @@ void Shapes::assign(int narg, char **arg)
     } else if (key == "shape") {
       need(1);
       shape_mode = FIXED;
-      shape_lo = shape_hi = (int) nscd_args::whole(lmp, "shapes assign", "shape", arg[iarg + 1], INT_MIN, INT_MAX);
+      shape_lo = shape_hi = (int) NSCD_NS::whole(lmp, "shapes assign", "shape", arg[iarg + 1], INT_MIN, INT_MAX);
       iarg += 2;
     } else if (key == "density") {
       need(1);
-      density = nscd_args::number(lmp, "shapes assign", "density", arg[iarg + 1]);
+      density = NSCD_NS::number(lmp, "shapes assign", "density", arg[iarg + 1]);
       if (!(density > 0.0)) error->all(FLERR, "shapes assign: density {} must be positive", density);
       iarg += 2;
     } else if (key == "mass") {
       need(1);
-      mass = nscd_args::number(lmp, "shapes assign", "mass", arg[iarg + 1]);
+      mass = NSCD_NS::number(lmp, "shapes assign", "mass", arg[iarg + 1]);
       if (!(mass > 0.0)) error->all(FLERR, "shapes assign: mass {} must be positive", mass);
       iarg += 2;
     } else if (key == "orient" && iarg + 1 < narg && strcmp(arg[iarg + 1], "random") == 0) {
       need(2);
       orient_mode = RANDOM;
-      orient_seed = nscd_args::whole(lmp, "shapes assign", "orient random SEED", arg[iarg + 2]);
+      orient_seed = NSCD_NS::whole(lmp, "shapes assign", "orient random SEED", arg[iarg + 2]);
       iarg += 3;
     } else if (key == "orient" && iarg + 1 < narg && strcmp(arg[iarg + 1], "quat") == 0) {
       need(5);
       orient_mode = FIXED;
       double norm = 0.0;
       for (int k = 0; k < 4; k++) {
-        fixed_quat[k] = nscd_args::number(lmp, "shapes assign", "orient quat", arg[iarg + 2 + k]);
+        fixed_quat[k] = NSCD_NS::number(lmp, "shapes assign", "orient quat", arg[iarg + 2 + k]);
         norm += fixed_quat[k] * fixed_quat[k];
       }
       if (!(norm > 1e-20)) error->all(FLERR, "shapes assign: orient quat has zero length");
@@ -303,7 +303,7 @@ void Shapes::assign(int narg, char **arg)
   };
   if (density > 0.0) {    // a point has no volume: check on all ranks before changing anything
     const tagint any_point =
-        nscd_checks::lowest_tag_where(lmp, [&](int i) { return (mask[i] & groupbit) && shape_of(i) == 0; });
+        NSCD_NS::lowest_tag_where(lmp, [&](int i) { return (mask[i] & groupbit) && shape_of(i) == 0; });
     if (any_point)
       error->all(FLERR, "shapes assign: atom ID {} is a point (shape 0) and has no volume; "
                  "give its 'mass' instead of a density", any_point);

@@ -11,7 +11,7 @@
 # Contributing author: the NSCD package developers
 # ----------------------------------------------------------------------
 
-"""Three of LAMMPS' style rules (doc/src/Modify_style.rst, Modify_requirements.rst of the
+"""Four of LAMMPS' style rules (doc/src/Modify_style.rst, Modify_requirements.rst of the
 LAMMPS tree) checked on the package's src/ (doc/build.md, "LAMMPS' style rules"):
 
 1. no member initialiser (`int n = 0;`, `Tally t{};`) in a class of a src/ header: members
@@ -27,7 +27,13 @@ LAMMPS tree) checked on the package's src/ (doc/build.md, "LAMMPS' style rules")
    them (`ERROR: ` + the message + ` (src/NSCD/file.cpp:123)`, 80 columns a line, with room
    for the values the placeholders take). Longer explanations go to the style's page in doc/,
    under '## Errors'; a message naming a page ("doc/fix_wire.md, Errors") must name one that
-   exists, with that heading.
+   exists, with that heading;
+4. the package's helpers in one namespace, LAMMPS_NS::NSCD_NS (PACKAGE_NAMESPACE), as LAMMPS'
+   packages keep theirs (GRANULAR's Granular_NS, RHEO's RHEO_NS): directly in LAMMPS_NS only
+   the styles and the classes derived from a LAMMPS class (their bases), forward declarations
+   and the definitions of their nested classes; no other namespace inside LAMMPS_NS and no
+   other top-level namespace than LAMMPS_NS, lib/'s `nscd` (forward declarations only) and
+   unnamed ones; no function with external linkage at global scope other than members.
 
 Prints every breach as file:line and exits 1 if there is one.
 
@@ -38,6 +44,8 @@ import re
 import sys
 
 MAX_MESSAGE = 120
+PACKAGE_NAMESPACE = "NSCD_NS"
+LIB_NAMESPACE = "nscd"    # lib/'s top-level namespace: src/ may forward-declare its types
 
 # src/ headers of plain helper structs that only the package's .cpp files include (never a
 # style header, so LAMMPS' core does not compile them): records kept as aggregates with their
@@ -293,6 +301,140 @@ def check_doc_pointers(src, doc):
     return problems
 
 
+# ---------------------------------------------------------------- the package's namespace
+
+def blank_preprocessor(text):
+    """The text with preprocessor lines (and their continuations) blanked, lines kept."""
+    return re.sub(r"^[ \t]*#(?:[^\n]*\\\n)*[^\n]*", lambda m: re.sub(r"[^\n]", " ", m.group(0)), text, flags=re.M)
+
+
+def without_template_heads(head):
+    """`head` with its `template <...>` prefixes removed (angle brackets balanced)."""
+    while True:
+        m = re.match(r"\s*template\s*<", head)
+        if not m:
+            return head
+        depth, i = 1, m.end()
+        while i < len(head) and depth:
+            depth += {"<": 1, ">": -1}.get(head[i], 0)
+            i += 1
+        head = head[i:]
+
+
+CLASS_HEAD = re.compile(r"^\s*(?:class|struct|union)\s+(?:\w+\s+)*?([\w:]+)\s*(?:final\s*)?(?::(.*))?$", re.S)
+
+
+def lammps_derived_classes(src):
+    """The classes of src/ derived from a LAMMPS class, directly or through another of them
+    (the styles and their package bases, e.g. ComputeNSCDGrainSums)."""
+    heads = []
+    for path in src.glob("*.h"):
+        text = strip_comments_and_strings(path.read_text())
+        heads += re.findall(r"\b(?:class|struct)\s+(\w+)\s*(?:final\s*)?:([^{;]*)\{", text)
+    derived = set()
+    grown = True
+    while grown:
+        grown = False
+        for name, bases in heads:
+            base_names = set(re.findall(r"\w+", bases))
+            if name not in derived and (re.search(r"\b" + LAMMPS_BASES + r"\b", bases) or base_names & derived):
+                derived.add(name)
+                grown = True
+    return derived
+
+
+def allowed_in_lammps_ns(head, derived):
+    """Why a definition whose head (the text before its '{') stands directly in LAMMPS_NS is
+    not allowed there, or None: a style or a class derived from a LAMMPS class (`derived`),
+    or the definition of a nested class of one (`struct FixWire::Lib`)."""
+    m = CLASS_HEAD.match(without_template_heads(head))
+    if not m:
+        return "a helper (function, enum or variable) directly in LAMMPS_NS"
+    name = m.group(1)
+    if "::" in name or name in derived:
+        return None
+    return f"the helper class {name} directly in LAMMPS_NS"
+
+
+def namespace_problems(path, label, derived):
+    """Breaches of rule 4 in one file (labelled `label` in the messages)."""
+    text = blank_preprocessor(strip_comments_and_strings(path.read_text()))
+    problems = []
+    stack = []    # per open '{': ('ns', name) for a namespace, ('other', '') otherwise
+    start = 0
+
+    def where(offset):
+        return f"{label}:{line_of(text, offset)}"
+
+    def names():
+        return [n for kind, n in stack if kind == "ns"]
+
+    for i, ch in enumerate(text):
+        if ch not in "{};":
+            continue
+        head = text[start:i]
+        at = start + len(head) - len(head.lstrip())
+        head = " ".join(head.split())
+        inside_other = any(kind == "other" for kind, _ in stack)
+        spaces = names()
+        if ch == "{":
+            ns = re.match(r"(?:inline\s+)?namespace\s*([\w:]*)\s*$", head)
+            if ns and not inside_other:
+                name = ns.group(1)
+                if name and not spaces and name not in ("LAMMPS_NS", LIB_NAMESPACE):
+                    problems.append(f"{where(at)}: top-level namespace {name}: the package's helpers go in "
+                                    f"LAMMPS_NS::{PACKAGE_NAMESPACE}")
+                elif name and spaces == ["LAMMPS_NS"] and name != PACKAGE_NAMESPACE:
+                    problems.append(f"{where(at)}: namespace {name} in LAMMPS_NS: the package keeps its helpers in "
+                                    f"one namespace, LAMMPS_NS::{PACKAGE_NAMESPACE} (doc/build.md)")
+                elif name and spaces[:1] == ["LAMMPS_NS"] and len(spaces) > 1:
+                    problems.append(f"{where(at)}: namespace {name} inside {'::'.join(spaces)}: the package keeps its "
+                                    f"helpers in one namespace, LAMMPS_NS::{PACKAGE_NAMESPACE}")
+                stack.append(("ns", name))
+            else:
+                if not inside_other:
+                    if spaces == ["LAMMPS_NS"]:
+                        why = allowed_in_lammps_ns(head, derived)
+                        if why:
+                            problems.append(f"{where(at)}: {why}: put it in LAMMPS_NS::{PACKAGE_NAMESPACE}: {head[:80]}")
+                    elif spaces[:1] == [LIB_NAMESPACE]:
+                        problems.append(f"{where(at)}: a definition in lib/'s namespace {LIB_NAMESPACE} "
+                                        f"(src/ only forward-declares lib/'s types): {head[:80]}")
+                    elif (not spaces and "(" in head
+                          and not re.match(r"(static|namespace)\b", without_template_heads(head).strip())):
+                        name = re.match(r"[^(]*?([\w:~]+)\s*\(", head)
+                        if name and "::" not in name.group(1) and "=" not in head[:name.start(1)]:
+                            problems.append(f"{where(at)}: the function {name.group(1)} at global scope (external "
+                                            f"linkage): make it a member, or put it in an unnamed namespace or "
+                                            f"in LAMMPS_NS::{PACKAGE_NAMESPACE}")
+                stack.append(("other", ""))
+            start = i + 1
+        elif ch == "}":
+            if stack:
+                stack.pop()
+            start = i + 1
+        else:    # ';'
+            if not inside_other and head and spaces == ["LAMMPS_NS"]:
+                forward = re.match(r"(?:template\s*<[^;]*>\s*)?(?:class|struct)\s+\w+$", head)
+                if not forward:
+                    problems.append(f"{where(at)}: a declaration directly in LAMMPS_NS: put it in "
+                                    f"LAMMPS_NS::{PACKAGE_NAMESPACE}: {head[:80]}")
+            elif not inside_other and head and spaces[:1] == [LIB_NAMESPACE]:
+                if not re.match(r"(?:class|struct)\s+\w+$", head):
+                    problems.append(f"{where(at)}: a declaration in lib/'s namespace {LIB_NAMESPACE} "
+                                    f"(src/ only forward-declares lib/'s types): {head[:80]}")
+            start = i + 1
+    return problems
+
+
+def check_namespaces(src):
+    problems = []
+    derived = lammps_derived_classes(src)
+    for path in sorted(list(src.glob("*.h")) + list(src.glob("*.cpp"))):
+        problems += namespace_problems(path, f"src/{path.name}", derived)
+    return problems
+
+
 def main(argv):
     if len(argv) < 2:
         print(__doc__)
@@ -300,13 +442,15 @@ def main(argv):
     repo = pathlib.Path(argv[1])
     src, lib = repo / "src", repo / "lib"
     problems = check_member_initialisers(src) + check_k_constants(src, lib) + \
-        check_messages(src, "--lengths" in argv) + check_doc_pointers(src, repo / "doc")
+        check_messages(src, "--lengths" in argv) + check_doc_pointers(src, repo / "doc") + \
+        check_namespaces(src)
     for p in problems:
         print(p)
     if problems:
         print(f"{len(problems)} breach(es) of LAMMPS' style rules (tools/lammps_style.py)")
         return 1
-    print("src/ keeps LAMMPS' style rules: member initialisers, constant names, message lengths and their doc pages")
+    print("src/ keeps LAMMPS' style rules: member initialisers, constant names, message lengths and their doc pages, "
+          f"helpers in LAMMPS_NS::{PACKAGE_NAMESPACE}")
     return 0
 
 

@@ -16,7 +16,7 @@
 // nscd/wall and fix nscd/plate (src/nscd_restart_blocks.h), one target per block, chosen by
 // NSCD_RESTART_BLOCK at compile time. The input is a block as LAMMPS hands it to
 // Fix::restart(), with its true size (which LAMMPS does not pass: the fixes rely on the
-// size the block states). Any input may be refused with nscd_restart::Damaged; anything else
+// size the block states). Any input may be refused with NSCD_NS::Damaged; anything else
 // is a bug: a crash, a read outside the input (AddressSanitizer), another exception, or an
 // accepted block whose values a run could not use or that does not write back to the bytes
 // it was read from.
@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-using namespace LAMMPS_NS::nscd_restart;
+using namespace LAMMPS_NS::NSCD_NS;
 using nscd_fuzz::violated;
 
 namespace {

@@ -15,7 +15,7 @@
 // Fuzz target: pair_style nscd's part of a restart file (src/nscd_restart_blocks.h): its
 // settings, then the coefficients of every type pair. The first input byte sets the number
 // of atom types (1 to 4), the rest is the file from the settings on. Any input may be
-// refused with nscd_restart::Damaged; anything else is a bug: a crash, a read outside the
+// refused with NSCD_NS::Damaged; anything else is a bug: a crash, a read outside the
 // input, another exception, or accepted values that pair_style / pair_coeff would refuse or
 // that do not write back to the bytes read.
 #include "fuzz_util.h"
@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-using namespace LAMMPS_NS::nscd_restart;
+using namespace LAMMPS_NS::NSCD_NS;
 using nscd_fuzz::violated;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)

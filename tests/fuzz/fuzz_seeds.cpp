@@ -30,7 +30,7 @@
 #include <fstream>
 #include <string>
 
-using namespace LAMMPS_NS::nscd_restart;
+using namespace LAMMPS_NS::NSCD_NS;
 namespace fs = std::filesystem;
 
 namespace {

@@ -529,7 +529,7 @@ class RestartDamageTest : public BadInputTest {
   static size_t fix_block(const std::string &bytes, const std::string &id, const std::string &style)
   {
     const std::string marker = counted(id) + counted(style);
-    const std::int32_t magic = LAMMPS_NS::nscd_restart::MAGIC;
+    const std::int32_t magic = LAMMPS_NS::NSCD_NS::MAGIC;
     for (size_t at = bytes.find(marker); at != std::string::npos; at = bytes.find(marker, at + 1)) {
       const size_t block = at + marker.size() + sizeof(int);
       if (block + 4 <= bytes.size() && std::memcmp(&bytes[block], &magic, 4) == 0) return block;
@@ -658,7 +658,7 @@ TEST_F(RestartDamageTest, DamagedFixBlocksAreRefusedByName)
 // (fix nscd stops with error->one on the rank owning the atom; here the reader directly.)
 TEST(AtomWarmStartDamage, DamagedAtomRecordsAreRefusedByName)
 {
-  using namespace LAMMPS_NS::nscd_restart;
+  using namespace LAMMPS_NS::NSCD_NS;
   nscd::ImpulseRecord a, b;
   a.tag_i = b.tag_i = 7;
   a.tag_j = 9, b.tag_j = -3;
@@ -749,7 +749,7 @@ TEST_F(RestartDamageTest, DamagedForceFieldSettingsAreRefusedByName)
   write_scene();
   size_t pair = 0, bond = 0, angle = 0;
   if (rank() == 0) {
-    const std::int32_t magic = LAMMPS_NS::nscd_restart::MAGIC;
+    const std::int32_t magic = LAMMPS_NS::NSCD_NS::MAGIC;
     pair = original.find(std::string(reinterpret_cast<const char *>(&magic), 4));    // written first
     const double bond_row[3] = {100.0, 0.1, 0.0};
     bond = original.find(std::string(reinterpret_cast<const char *>(bond_row), sizeof(bond_row)));

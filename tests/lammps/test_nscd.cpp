@@ -1318,7 +1318,7 @@ TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
     run("shapes assign all shape 1 density 1");
     if (layout == "tiled") commands({"comm_style tiled", "balance 1.0 rcb"});
     run("run " + num(steps));
-    const std::vector<NSCDCommCount::Tally> all = solver()->comm_count().summed(MPI_COMM_WORLD);
+    const std::vector<NSCD_NS::NSCDCommCount::Tally> all = solver()->comm_count().summed(MPI_COMM_WORLD);
     double mine[2] = {(double) lmp->atom->nghost, lmp->atom->nghost > 0 ? 1.0 : 0.0}, ghosts[2];
     MPI_Allreduce(mine, ghosts, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
     const double exchanges = (double) solver()->sweep_exchanges();

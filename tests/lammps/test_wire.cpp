@@ -1819,7 +1819,7 @@ TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
   scene(nodes, 21, true, 100.0, 0.2, 0.05);
   commands({"fix w all wire k_n 0", "thermo_style custom step", "thermo 1000", "run 10"});
   const auto *fix = dynamic_cast<FixWire *>(lmp->modify->get_fix_by_id("w"));
-  const std::vector<NSCDCommCount::Tally> all = fix->comm_count().summed(MPI_COMM_WORLD);
+  const std::vector<NSCD_NS::NSCDCommCount::Tally> all = fix->comm_count().summed(MPI_COMM_WORLD);
   const double ghosts = summed(lmp->atom->nghost), substeps = (double) fix->substeps();
   // by hand: per substep each rank receives one message from every other rank owning some of
   // its ghost nodes (their positions and velocities) and one from every other rank holding
