@@ -50,8 +50,7 @@ ComputeNSCDCrushAtom::ComputeNSCDCrushAtom(LAMMPS *lmp, int narg, char **arg) :
 void ComputeNSCDCrushAtom::parse(int narg, char **arg)
 {
   const std::string where = "compute nscd/crush/atom";
-  const char *usage = "expected 'compute ID group nscd/crush/atom S0 [size D0 weibull M] "
-                      "[boundaries yes|no] [wire yes|no]'";
+  const char *usage = "see doc/compute_nscd_crush_atom.md, Syntax";
   if (narg < 4) error->all(FLERR, "{}: the strength S0 is missing; {}", where, usage);
   strength = NSCD_NS::number(lmp, where, "strength", arg[3]);
   if (!(strength > 0.0)) error->all(FLERR, "{}: strength {} must be > 0 (a stress, force/area); {}", where, arg[3], usage);

@@ -126,8 +126,7 @@ void CreateGrains::command(int narg, char **arg)
 void CreateGrains::parse(int narg, char **arg)
 {
   Request &r = *request;
-  const char *usage = "expected 'create_grains TYPE REGION-ID shape IMIN IMAX density RHO seed SEED "
-                      "(lattice SPACING | random N TRIES) [gap G]'";
+  const char *usage = "see doc/create_grains.md, Syntax";
   if (narg < 2) error->all(FLERR, "Illegal create_grains command: {}", usage);
   r.type = (int) NSCD_NS::whole(lmp, "create_grains", "TYPE", arg[0], 1, INT_MAX);
   if (r.type > atom->ntypes)

@@ -172,8 +172,7 @@ void CreateWire::command(int narg, char **arg)
 void CreateWire::parse(int narg, char **arg)
 {
   Request &r = *request;
-  const char *usage = "expected 'create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 "
-                      "Z1 X2 Y2 Z2 | polyline FILE, then bond BTYPE mass M [angle ATYPE] ...'";
+  const char *usage = "see doc/create_wire.md, Syntax";
   if (narg < 3) error->all(FLERR, "Illegal create_wire command: {}", usage);
   r.node_type = (int) NSCD_NS::whole(lmp, "create_wire", "atom type", arg[0], INT_MIN, INT_MAX);
   if (r.node_type < 1 || r.node_type > atom->ntypes)
@@ -637,16 +636,15 @@ void CreateWire::check_wire_overlaps()
   const wire::ElementOverlap self = wire::deepest_overlap_within(joined, r.radius, shifts);
   if (self.depth > allowed) {
     const auto &ea = joined.elements[self.a], &eb = joined.elements[self.b];
-    std::string why = "lay it elsewhere, raise 'overlap', or use 'overlap ignore'";
+    // the cause where it is known (doc/create_wire.md, Errors, has the rest)
+    std::string why = fmt::format(" (allowed {:.4g}); lay it elsewhere or raise 'overlap'", allowed);
     if (self.shift.squaredNorm() > 0.0)
-      why = fmt::format("the wire reaches its own periodic image, ({:.6g}, {:.6g}, {:.6g}) away: make it smaller "
-                        "than the periodic box or the box larger", self.shift.x(), self.shift.y(), self.shift.z());
+      why = ": it reaches its periodic image; shrink it or enlarge the box";
     else if (r.shape == Request::Shape::loop && r.loop.turns > 1.0 && std::abs(r.loop.pitch) < 2.0 * r.radius)
-      why = fmt::format("the pitch {:.6g} is below the wire's diameter {:.6g}, so its turns lie on each other: give "
-                        "a pitch of at least {:.6g}", r.loop.pitch, 2.0 * r.radius, 2.0 * r.radius);
-    error->all(FLERR, "create_wire {}: the new wire overlaps itself by {:.4g} (allowed: {:.4g}) between its elements {}-{} and "
-               "{}-{}; {}",
-               r.shape_name, self.depth, allowed, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
+      why = fmt::format(": the pitch {:.6g} is below the wire's diameter {:.6g}; raise it", r.loop.pitch,
+                        2.0 * r.radius);
+    error->all(FLERR, "create_wire {}: overlaps itself by {:.4g} at elements {}-{}, {}-{}{}", r.shape_name,
+               self.depth, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
   }
 
   // The wires already there: their nodes and bonds from every rank, each element with its

@@ -874,10 +874,10 @@ void FixNSCD::stop_on_non_finite_problem()
   if (worst[1] < 0.0) {    // a boundary's own body: which fix?
     const int index = (int) (-1.0 - worst[1]);
     for (size_t k = 0; k < global_bodies.size(); k++)
-      if (global_bodies[k] == index) culprit = fmt::format("the body of fix {}", global_body_fixes[k]->id);
+      if (global_bodies[k] == index) culprit = fmt::format("fix {}'s body", global_body_fixes[k]->id);
   }
-  error->all(FLERR, "fix nscd: step {}: the contact problem has no finite solution (residual {}); the largest "
-             "impulse, {:.3g}, acts on {}", update->ntimestep, solver->report.residual, worst[0], culprit);
+  error->all(FLERR, "fix nscd: step {}: no finite solution (residual {}); the largest impulse, {:.3g}, acts on {} "
+             "(doc/fix_nscd.md, Errors)", update->ntimestep, solver->report.residual, worst[0], culprit);
 }
 
 void FixNSCD::exchange_velocities()
@@ -1206,12 +1206,10 @@ void FixNSCD::write_restart(FILE *fp)
 void FixNSCD::restart(char *bytes)
 {
   NSCD_NS::SolverBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_solver_block, bytes,
-      "To start without the stored warm start, define fix nscd with another ID");
+      lmp, this, NSCD_NS::read_solver_block, bytes, "doc/fix_nscd.md");
   if (!block.read) {
-    NSCD_NS::warn_format_not_read(lmp, this, "the warm start", block.format,
-                                  "; it is not read (the first step starts from zero impulses; write the "
-                                  "restart again with this build to keep it)");
+    NSCD_NS::warn_format_not_read(lmp, this, "warm start", block.format, "the first step starts from zero impulses",
+                                  "doc/fix_nscd.md");
     return;
   }
   // The impulses' timestep, so that a run at another `timestep` starts from the same forces
@@ -1275,8 +1273,7 @@ void FixNSCD::unpack_restart(int nlocal, int nth)
                              std::to_string(size) + " per-atom values for it: the file is damaged");
     records = NSCD_NS::read_atom_impulses(&extra[nlocal][m + 1], (std::size_t) size - 1, atom->tag[nlocal]);
   } catch (NSCD_NS::Damaged &e) {
-    error->one(FLERR, "fix nscd {}: the warm start in the restart file cannot be used: {}. To start without "
-               "it, define fix nscd with another ID", id, e.what());
+    error->one(FLERR, "fix nscd {}: restart file's warm start refused: {} (doc/fix_nscd.md, Errors)", id, e.what());
   }
   maxexchange = std::max(maxexchange, NSCDAtomImpulses::values_for(records.size()));
   solver->atom_impulses.set(nlocal, std::move(records));

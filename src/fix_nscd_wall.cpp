@@ -85,8 +85,7 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   restart_global = 1;
 
-  const char *usage = "expected 'fix ID group nscd/wall plane PX PY PZ NX NY NZ' or 'fix ID group "
-                      "nscd/wall cylinder CX CY CZ AX AY AZ R', then friction/restitution/velocity";
+  const char *usage = "expected plane or cylinder; see doc/fix_nscd_wall.md, Syntax";
   if (narg < 4) error->all(FLERR, "Illegal fix nscd/wall command: {}", usage);
   int iarg;
   if (strcmp(arg[3], "plane") == 0) {
@@ -212,12 +211,12 @@ void FixNSCDWall::warn_about_grains_in_the_wall()
   MPI_Bcast(found, 3, MPI_DOUBLE, worst.rank, world);
   if (comm->me != 0) return;
   if (wall->kind == Wall::Kind::cylinder)
-    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at the start of the "
-                   "run{}",
-                   id, (tagint) found[1], found[0], wall->cylinder.radius, wall->cylinder.radius < found[2] ? "; the radius is below the grain's bounding radius" : "");
+    error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at the "
+                   "start{}", id, (tagint) found[1], found[0], wall->cylinder.radius,
+                   wall->cylinder.radius < found[2] ? " (narrower than the grain)" : "; place it inside");
   else
     error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall "
-                   "at the start of the run; place it in front", id, (tagint) found[1], found[0]);
+                   "at the start; place it in front", id, (tagint) found[1], found[0]);
 }
 
 bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const
@@ -293,8 +292,7 @@ void FixNSCDWall::write_restart(FILE *fp)
 void FixNSCDWall::restart(char *bytes)
 {
   const NSCD_NS::WallBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_wall_block, bytes,
-      "To start from the position given in the deck, define the wall with another fix ID");
+      lmp, this, NSCD_NS::read_wall_block, bytes, "doc/fix_nscd_wall.md");
   if (block.cylinder != (wall->kind == Wall::Kind::cylinder)) {
     if (comm->me == 0)
       error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "

@@ -158,8 +158,6 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
 {
   const std::string key = arg[iarg];
   const char *value = iarg + 1 < narg ? arg[iarg + 1] : "";
-  const char *keywords = "k_n, gamma_n, k_t, gamma_t, mu_s, mu_d, mu_ww_s, mu_ww_d, grain_friction, radius, damp, "
-                         "substeps, dt_sp, safety, contacts_per_node, skin, inertia, strength, strength_spread, seed, breaks";
   if (key == "grain_friction") return parse_grain_friction(narg, arg, iarg);
   wire::SoftContactLaw &law = lib->law;
   const std::map<std::string, double *> plain = {
@@ -169,12 +167,13 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
       {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}, {"inertia", &inertia_scale},
       {"strength", &strength}, {"strength_spread", &strength_spread}, {"seed", &strength_seed}};
   const bool known = plain.count(key) || key == "substeps" || key == "breaks";
-  if (!known) error->all(FLERR, "fix wire: unknown keyword '{}' (valid keywords: {})", key, keywords);
-  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (valid keywords: {}; each takes one value)", key, keywords);
+  if (!known)
+    error->all(FLERR, "fix wire: unknown keyword '{}'; the keywords are listed in doc/fix_wire.md, Syntax", key);
+  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (doc/fix_wire.md, Syntax)", key);
   if (plain.count(value) || strcmp(value, "substeps") == 0 || strcmp(value, "breaks") == 0 ||
       strcmp(value, "grain_friction") == 0)
     error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
-               "(valid keywords: {}; each takes one value)", key, value, keywords);
+               "(doc/fix_wire.md, Syntax)", key, value);
   if (key == "breaks") {
     breaks_given = true;
     if (comm->me == 0 && !breaks_file) {
@@ -342,8 +341,8 @@ void FixWire::check_contacts_possible()
   if (!grains && lib->boundaries.empty()) return;
   const char *what = grains ? (lib->boundaries.empty() ? "grains" : "grains, walls and plate") : "walls and plate";
   if (!k_n_given)
-    error->all(FLERR, "fix wire {}: no contact stiffness k_n given: the wire passes "
-               "through the {}; give 'k_n K' and 'radius R', or 'k_n 0'", id, what);
+    error->all(FLERR, "fix wire {}: no k_n given: the wire would pass through the {}; give 'k_n K' and 'radius R', "
+               "or 'k_n 0'", id, what);
   if (comm->me == 0)
     error->warning(FLERR, "fix wire {}: k_n 0: the wire has no contacts and passes through the {} of this scene",
                    id, what);

@@ -264,8 +264,8 @@ void FixWire::unpack_restart(int nlocal, int nth)
     const auto values = (std::size_t) extra[m] - gear_only;
     lib->atom_memories.set(nlocal, NSCD_NS::read_atom_memories(state + GEAR_COLUMNS, values, atom->tag[nlocal]));
   } catch (NSCD_NS::Damaged &e) {
-    error->one(FLERR, "fix wire {}: the friction memories in the restart file "
-               "cannot be used: {}; see doc/fix_wire.md, Errors", id, e.what());
+    error->one(FLERR, "fix wire {}: restart file's friction memories refused: {} (doc/fix_wire.md, Errors)", id,
+               e.what());
   }
   maxexchange = std::max(maxexchange, GEAR_COLUMNS + lib->atom_memories.values(nlocal));
   memories_with_atoms = true;
@@ -383,12 +383,11 @@ void FixWire::write_restart(FILE *fp)
 void FixWire::restart(char *bytes)
 {
   NSCD_NS::WireBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_wire_block, bytes,
-      "To start without the stored friction memories, define fix wire with another ID");
+      lmp, this, NSCD_NS::read_wire_block, bytes, "doc/fix_wire.md");
   state_dt = block.dt;
   if (!block.memories_read) {
-    NSCD_NS::warn_format_not_read(lmp, this, "the wire", block.format,
-                                  ": its contacts' friction springs are not read (they start again from zero)");
+    NSCD_NS::warn_format_not_read(lmp, this, "wire contacts", block.format,
+                                  "their friction springs start again from zero", "doc/fix_wire.md");
     return;
   }
   if (!block.memories.empty()) file_with_owned_nodes(block.memories);

@@ -85,28 +85,30 @@ inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *wha
 }
 
 // read(bytes, size) from nscd_restart_blocks.h on the block LAMMPS hands Fix::restart(), or
-// an error naming the fix, what is wrong with the block and `way_out` (how to start without
-// it) if it is damaged.
+// an error naming the fix and what is wrong with the block if it is damaged; the way out
+// (another fix ID starts without the stored state, or a newer build) is explained under
+// Errors of the fix's page `page` ("doc/fix_nscd.md").
 template <class Read>
-auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *way_out)
-    -> decltype(read(bytes, NSCD_NS::UNKNOWN_SIZE))
+auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *page)
+    -> decltype(read(bytes, UNKNOWN_SIZE))
 {
   try {
-    return read(bytes, NSCD_NS::UNKNOWN_SIZE);
-  } catch (NSCD_NS::Damaged &e) {
-    lmp->error->all(FLERR, "fix {} {}: its restart block cannot be used: {}. {}", fix->style, fix->id, e.what(),
-                    way_out);
+    return read(bytes, UNKNOWN_SIZE);
+  } catch (Damaged &e) {
+    lmp->error->all(FLERR, "fix {} {}: restart block refused: {} ({}, Errors)", fix->style, fix->id, e.what(), page);
   }
   return {};    // not reached: error->all does not return
 }
 
 // Warns (on rank 0) that the block holding `what` is in an older format whose length this
-// build cannot check; `not_read` says what is not read and what the run does without it.
-inline void warn_format_not_read(LAMMPS *lmp, const Fix *fix, const char *what, int format, const char *not_read)
+// build cannot check, so it is not read; `instead` says what the run does without it, `page`
+// the fix's page whose Errors section explains it ("doc/fix_nscd.md").
+inline void warn_format_not_read(LAMMPS *lmp, const Fix *fix, const char *what, int format, const char *instead,
+                                 const char *page)
 {
   if (lmp->comm->me == 0)
-    lmp->error->warning(FLERR, "fix {} {}: the restart file holds {} in format {}, whose length this build cannot "
-                        "check{}", fix->style, fix->id, what, format, not_read);
+    lmp->error->warning(FLERR, "fix {} {}: restart file's {} in old format {} not read: {} ({}, Errors)", fix->style,
+                        fix->id, what, format, instead, page);
 }
 
 }    // namespace NSCD_NS

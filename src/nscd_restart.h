@@ -88,12 +88,10 @@ inline std::int32_t version_of_mark(const std::int32_t mark[2])
     return std::string(text);
   };
   if (mark[0] != MAGIC)
-    throw Damaged("it does not begin with this package's mark (0x" + hex(mark[0]) + " instead of 0x" + hex(MAGIC) +
-                  "): the file is damaged, or was written before restart blocks carried a format (a build "
-                  "older than Nov 2026)");
+    throw Damaged("no package mark (0x" + hex(mark[0]) + ", expected 0x" + hex(MAGIC) + ")");
   if (mark[1] < 1 || mark[1] > NEWEST_KNOWN)
-    throw Damaged("its format number " + std::to_string(mark[1]) + " is not one this package writes (1 to " +
-                  std::to_string(NEWEST_KNOWN) + "): it is damaged");
+    throw Damaged("format number " + std::to_string(mark[1]) + ", which no build writes (1 to " +
+                  std::to_string(NEWEST_KNOWN) + ")");
   return mark[1];
 }
 
@@ -120,8 +118,7 @@ class BlockReader {
     const std::int64_t largest = std::numeric_limits<int>::max() - (std::int64_t) SIZED_HEADER_BYTES;
     if (size < 0 || size > largest || (std::uint64_t) size > left_)
       throw Damaged("it states a payload of " + std::to_string(size) + " bytes, but " +
-                    (left_ == UNKNOWN_SIZE ? std::string("that is impossible") : std::to_string(left_) + " follow") +
-                    ": the block is damaged or cut short");
+                    (left_ == UNKNOWN_SIZE ? std::string("that is impossible") : std::to_string(left_) + " follow"));
     left_ = (std::size_t) size;
   }
 
@@ -140,7 +137,7 @@ class BlockReader {
     if (left_ == UNKNOWN_SIZE) throw std::logic_error("BlockReader: records of a block without a size");
     if (count < 0 || (std::uint64_t) count > left_ / sizeof(Record))
       throw Damaged("it counts " + std::to_string(count) + " " + what + " of " + std::to_string(sizeof(Record)) +
-                    " bytes, but only " + std::to_string(left_) + " bytes are left: the count is damaged");
+                    " bytes, only " + std::to_string(left_) + " bytes left");
     std::vector<Record> out((std::size_t) count);
     if (count > 0) take(out.data(), (std::size_t) count * sizeof(Record), what);
     return out;
@@ -150,7 +147,7 @@ class BlockReader {
   void expect_end() const
   {
     if (left_ != 0)
-      throw Damaged(std::to_string(left_) + " bytes are left after its contents: a count or the size is damaged");
+      throw Damaged(std::to_string(left_) + " bytes left after its contents");
   }
 
   std::size_t left() const { return left_; }
@@ -163,7 +160,7 @@ class BlockReader {
   {
     if (n > left_)
       throw Damaged(std::string("it ends inside ") + what + " (" + std::to_string(n) + " bytes needed, " +
-                    std::to_string(left_) + " left): the block is damaged or cut short");
+                    std::to_string(left_) + " left)");
     std::memcpy(to, at_, n);
     at_ += n;
     if (left_ != UNKNOWN_SIZE) left_ -= n;

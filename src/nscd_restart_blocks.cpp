@@ -57,8 +57,8 @@ std::int32_t open_block(BlockReader &in, std::int32_t newest, std::int32_t sized
 {
   const std::int32_t format = in.version();
   if (format > newest)
-    throw Damaged(std::string("the block holds ") + what + " in format " + std::to_string(format) +
-                  ", this build reads formats up to " + std::to_string(newest) + "; use a newer build");
+    throw Damaged("format " + std::to_string(format) + " is newer than this build's " + std::to_string(newest) +
+                  "; use a newer build");
   if (format >= sized_since) in.limit_to_stated_size();
   return format;
 }
@@ -69,13 +69,12 @@ std::int32_t open_block(BlockReader &in, std::int32_t newest, std::int32_t sized
 void require_step(double dt, const std::string &what)
 {
   if (!(dt == 0.0 || (dt >= 1e-100 && dt <= 1e100)))
-    throw Damaged(what + " is " + number(dt) + ", neither 0 (not known) nor a time step within 1e-100 .. 1e100: "
-                  "the block is damaged");
+    throw Damaged(what + " is " + number(dt) + ", not 0 or within 1e-100..1e100");
 }
 
 void require_finite(double x, const std::string &what)
 {
-  if (!std::isfinite(x)) throw Damaged(what + " is " + number(x) + ", not a finite number: the block is damaged");
+  if (!std::isfinite(x)) throw Damaged(what + " is " + number(x) + ", not finite");
 }
 
 void check_impulse_record(const nscd::ImpulseRecord &r, std::size_t k)
@@ -84,7 +83,7 @@ void check_impulse_record(const nscd::ImpulseRecord &r, std::size_t k)
   // atom IDs are positive, walls and plates negative; a contact joins two different bodies
   if (r.tag_i == 0 || r.tag_j == 0 || r.tag_i == r.tag_j)
     throw Damaged(which + " joins the bodies " + std::to_string(r.tag_i) + " and " + std::to_string(r.tag_j) +
-                  ", which no contact can: the block is damaged");
+                  ", which no contact can");
   for (int d = 0; d < 3; d++) require_finite(r.impulse[d], which + "'s impulse");
 }
 
@@ -93,14 +92,14 @@ void check_stored_contact(const nscd::wire::StoredContact &c, std::size_t k)
   const std::string which = "wire contact memory " + std::to_string(k + 1);
   // the first id is the node whose owner computes the contact (an atom ID, > 0)
   if (c.key[0] <= 0)
-    throw Damaged(which + " belongs to node ID " + std::to_string(c.key[0]) + ", not an atom ID: the block is damaged");
+    throw Damaged(which + " belongs to node ID " + std::to_string(c.key[0]) + ", not an atom ID");
   for (int end = 0; end < 2; end++) {
     for (double x : c.memory.spring[end].xi) require_finite(x, which + "'s friction spring");
     const double s = c.memory.spring[end].sliding, w = c.memory.weight[end];
     if (s != 0.0 && s != 1.0)
-      throw Damaged(which + " has a sliding flag " + number(s) + " (0 or 1): the block is damaged");
+      throw Damaged(which + " has a sliding flag " + number(s) + ", not 0 or 1");
     if (!(w >= 0.0 && w <= 1.0))
-      throw Damaged(which + " has an end weight " + number(w) + " outside [0, 1]: the block is damaged");
+      throw Damaged(which + " has an end weight " + number(w) + " outside [0, 1]");
   }
 }
 
@@ -162,18 +161,17 @@ std::vector<Record> read_atom_records(const double *values, std::size_t availabl
   constexpr int per_record = (int) (sizeof(Record) / sizeof(double));
   const std::string atom = "atom ID " + std::to_string(tag);
   if (available < 2)
-    throw Damaged(atom + " has " + std::to_string(available) + " " + names.values +
-                  ", fewer than the 2 of its header: the file is damaged");
+    throw Damaged(atom + " has " + std::to_string(available) + " " + names.values + ", fewer than the 2 of its header");
   const double format = values[0], count = values[1];
   if (format != format_read)
     throw Damaged(atom + " holds " + names.held + " in format " + number(format) +
                   (format > format_read && format <= NEWEST_KNOWN && format == std::floor(format)
                        ? ", this build reads format " + std::to_string(format_read) + "; use a newer build"
-                       : ", which no build writes: the file is damaged"));
+                       : ", which no build writes"));
   if (!(count >= 0.0) || count != std::floor(count) || count > (double) (available - 2) / per_record ||
       2 + per_record * (std::size_t) count != available)
     throw Damaged(atom + " states " + number(count) + " " + names.records + " in " + std::to_string(available) +
-                  " values: the file is damaged");
+                  " values");
   std::vector<Record> records((std::size_t) count);
   // Bytes into constructed records: valid for a trivially copyable Record; through void *
   // because GCC's -Wclass-memaccess asks for a trivial one.
@@ -184,7 +182,7 @@ std::vector<Record> read_atom_records(const double *values, std::size_t availabl
     check(records[k], k);
     if (owner(records[k]) != tag)
       throw Damaged(atom + "'s " + names.record + " " + std::to_string(k + 1) + " belongs to atom ID " +
-                    std::to_string(owner(records[k])) + ": the file is damaged");
+                    std::to_string(owner(records[k])));
   }
   return records;
 }
@@ -238,7 +236,7 @@ WireBlock read_wire_block(const char *block, std::size_t available)
   BlockReader in(block, available);
   out.format = open_block(in, WIRE_FORMAT, 3, "the wire's state");
   if (out.format < 3)    // formats 1 and 2 had no mark: this one is not ours
-    throw Damaged("format " + std::to_string(out.format) + " of fix wire never had this mark: the block is damaged");
+    throw Damaged("format " + std::to_string(out.format) + " of fix wire never had this mark");
   out.dt = in.value<double>("the substep");
   check_wire_step(out.dt);
   const auto count = in.value<std::int64_t>("the memory count");
@@ -280,7 +278,7 @@ WallBlock read_wall_block(const char *block, std::size_t available)
   out.format = open_block(in, WALL_FORMAT, 2, "the wall");
   const double kind = in.value<double>("the wall's kind");
   if ((kind != 0.0 && kind != 1.0) || std::signbit(kind))    // exactly as written (not -0)
-    throw Damaged("the wall's kind is " + number(kind) + " (0 for a plane, 1 for a cylinder): the block is damaged");
+    throw Damaged("the wall's kind is " + number(kind) + ", not 0 (plane) or 1 (cylinder)");
   out.cylinder = kind == 1.0;
   for (double &x : out.point) {
     x = in.value<double>("the wall's position");
@@ -311,7 +309,7 @@ PlateBlock read_plate_block(const char *block, std::size_t available)
     require_finite(*values[k], names[k]);
   }
   if (out.elapsed < 0.0)
-    throw Damaged("the plate's loading time is " + number(out.elapsed) + ", below 0: the block is damaged");
+    throw Damaged("the plate's loading time is " + number(out.elapsed) + ", below 0");
   if (out.format >= 2) in.expect_end();
   return out;
 }
@@ -343,13 +341,12 @@ void check_pair_settings(const PairSettings &s)
   // a distance given (>= 0) or none (-1, the fraction applies)
   auto distance = [](double x, const char *what) {
     if (x != -1.0 && !(x >= 0.0 && std::isfinite(x)))
-      throw Damaged(std::string(what) + " " + number(x) + " is neither a distance >= 0 nor -1 (not given): the "
-                    "settings are damaged");
+      throw Damaged(std::string(what) + " " + number(x) + " is neither a distance >= 0 nor -1 (not given)");
   };
   auto fraction = [](double x, double largest, const char *what) {
     if (!(x >= 0.0 && x <= largest))
       throw Damaged(std::string(what) + " " + number(x) + " is outside [0, " + number(largest) +
-                    "]: the settings are damaged");
+                    "]");
   };
   distance(s.activation_given, "the activation");
   distance(s.reach_given, "the reach");
@@ -360,13 +357,12 @@ void check_pair_settings(const PairSettings &s)
 void check_pair_coefficient(const PairCoefficient &c)
 {
   if (c.set != 0 && c.set != 1)
-    throw Damaged("a type pair's flag is " + std::to_string(c.set) + " (0 or 1): the settings are damaged");
+    throw Damaged("a type pair's flag is " + std::to_string(c.set) + ", not 0 or 1");
   if (!c.set) return;
   if (!(c.friction >= 0.0) || !std::isfinite(c.friction))
-    throw Damaged("a friction coefficient is " + number(c.friction) + ", not a finite number >= 0: the settings "
-                  "are damaged");
+    throw Damaged("a friction coefficient is " + number(c.friction) + ", not a finite number >= 0");
   if (!(c.restitution >= 0.0 && c.restitution <= 1.0))
-    throw Damaged("a restitution coefficient is " + number(c.restitution) + ", outside [0, 1]: the settings are damaged");
+    throw Damaged("a restitution coefficient is " + number(c.restitution) + ", outside [0, 1]");
 }
 
 }    // namespace NSCD_NS

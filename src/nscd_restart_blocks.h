@@ -135,7 +135,7 @@ template <class Source> PairSettings read_pair_settings(Source &in)
 {
   const std::int32_t format = in.version();
   if (format > PAIR_FORMAT)
-    throw Damaged("the settings are in format " + std::to_string(format) + ", this build reads formats up to " +
+    throw Damaged("the settings' format " + std::to_string(format) + " is newer than this build's " +
                   std::to_string(PAIR_FORMAT) + "; use a newer build");
   PairSettings s;
   s.activation_given = in.template value<double>("the activation");

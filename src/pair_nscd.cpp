@@ -191,9 +191,9 @@ void PairNSCD::init_style()
   const double largest = avec->shapes().max_bounding_radius();
   if (activation > 2.0 * largest)
     error->all(FLERR, "pair_style nscd: activation {} is larger than the largest grain "
-               "({} across); use at most {}", activation, 2.0 * largest, 2.0 * largest);
+               "({:.6g} across); use at most {:.6g}", activation, 2.0 * largest, 2.0 * largest);
   if (reach > 20.0 * largest)
-    error->all(FLERR, "pair_style nscd: reach {} is more than 10 grains ({} across): lower the "
+    error->all(FLERR, "pair_style nscd: reach {} is more than 10 grains ({:.6g} across): lower the "
                "timestep instead", reach, 2.0 * largest);
   check_periodic_box_holds_grains();
   neighbor->add_request(this);
@@ -404,8 +404,8 @@ void PairNSCD::stop_if_damaged(std::string problem)
   if (size == 0) return;
   problem.resize(size);
   MPI_Bcast(&problem[0], size, MPI_CHAR, 0, world);
-  error->all(FLERR, "pair_style nscd: the restart file's settings cannot be used: {}. Write the restart "
-             "again, or start from a data file", problem);
+  error->all(FLERR, "pair_style nscd: restart file's settings refused: {}; start from a data file "
+             "(doc/pair_nscd.md, Errors)", problem);
 }
 
 /* The contacts of the last compute() (at capacity) and the per type-pair laws, besides what

@@ -209,8 +209,7 @@ void Shapes::check_mass_properties(int lo, int hi, double density, double mass)
       if (density > 0.0) nscd::grain_inertia_from_density(shape, density);
       else nscd::grain_inertia_from_mass(shape, mass);
     } catch (std::exception &e) {
-      error->all(FLERR, "shapes assign: shape {} with {} {}: {}", id,
-                 density > 0.0 ? "density" : "mass", density > 0.0 ? density : mass, e.what());
+      error->all(FLERR, "shapes assign: shape {}: {}", id, e.what());    // e.what() names the density or mass
     }
   }
 }

@@ -290,7 +290,12 @@ def check_doc_pointers(src, doc):
     for path in sorted(src.rglob("*")):
         if path.suffix not in (".h", ".cpp"):
             continue
-        for line, _, message in messages(path):
+        # the messages (adjacent literals joined), and every other literal naming a page: one
+        # passed to a helper that puts it in a message (read_restart_block's "doc/fix_nscd.md")
+        text = strip_comments_and_strings(path.read_text(), keep_strings=True)
+        literals = [(line_of(text, m.start()), None, m.group(1)) for m in LITERAL.finditer(text)
+                    if DOC_POINTER.search(m.group(1))]
+        for line, _, message in messages(path) + literals:
             for page, heading in DOC_POINTER.findall(message):
                 where = f"{path.relative_to(src.parent)}:{line}"
                 if not (doc / page).is_file():

@@ -25,6 +25,12 @@ Each case is a small deck with one bad value (or a bad combination). Outcomes:
   handled   a case that must run (an edge value that is fine) ran and passed its check
   wrong     such a case ran but failed its check
 Exit status 1 if any case is crash, hang, silent or wrong. doc/robustness.md has the table.
+
+Message length (LAMMPS' rule of at most two printed lines, doc/build.md): every ERROR line a
+case prints, and the WARNING a warning case expects, must hold a message (the text between
+'ERROR: ' or 'WARNING: ' and LAMMPS' ' (src/...:N)') of at most MAX_MESSAGE characters plus
+the length of the values the case names (its substrings): the format string's limit, with room
+for what fills it. A longer one is listed as `long` and fails the run (--max-length 0: off).
 """
 import argparse
 import os
@@ -382,7 +388,7 @@ CASES = [
      "error", ["pitch 0.01", "diameter"]),
     ("a loop across its periodic image", deck(WIRE, {"boundary": "boundary p p f",
                                                      "create_wire": "create_wire 2 loop 0 0 2 4.995 bond 1 mass 0.01 radius 0.02 strained yes"}),
-     "error", ["periodic image"]),
+     "error", ["periodic image"]),    # (the message names no value)
     ("a second wire through the first", deck(WIRE, {"create_wire": "create_wire 2 line -3 -2 0.3 3 -2 0.3 bond 1 angle 1 mass 0.01 "
                                                                    "radius 0.02\ncreate_wire 2 line 2 -4 0.3 2 3 0.3 bond 1 mass 0.01 radius 0.02"}),
      "error", ["overlaps the wire element"]),
@@ -413,6 +419,39 @@ CASES = [
 ]
 
 
+MAX_MESSAGE = 120    # as tools/lammps_style.py's limit on format strings
+
+
+def message_text(line):
+    """The message of an ERROR or WARNING line, without LAMMPS' prefix and its ' (src/...:N)'."""
+    text = re.sub(r"^.*?(ERROR|WARNING)( on proc \d+)?: ", "", line.strip())
+    return re.sub(r"\s+\((src|lib)/[^)]*:\d+\)\s*$", "", text)
+
+
+def over_length(line, words, limit):
+    """How many characters the message of `line` exceeds `limit` plus its named values by (<= 0: fine)."""
+    text = message_text(line)
+    allowance = limit + sum(len(w) for w in words if w in text)
+    return len(text) - allowance
+
+
+def long_messages(text, expect, words, limit):
+    """The ERROR lines (and for a warning case the named WARNING line) of a case's output that
+    are too long, as (excess, message)."""
+    if limit <= 0:
+        return []
+    ours = re.compile(r"^\s*(ERROR|WARNING)( on proc \d+)?: ")    # LAMMPS' lines, not MPI's ORTE_ERROR_LOG
+    lines = [l for l in text.splitlines() if ours.match(l) and l.lstrip().startswith("ERROR")]
+    if expect == "warning":
+        lines += [l for l in text.splitlines() if ours.match(l) and "WARNING" in l and all(w in l for w in words)][:1]
+    found = {}
+    for l in lines:
+        excess = over_length(l, words, limit)
+        if excess > 0:
+            found[message_text(l)] = excess
+    return [(excess, message) for message, excess in found.items()]
+
+
 def run_case(lmp, ranks, name, lines, expect, words, timeout):
     with tempfile.TemporaryDirectory(prefix="probe_") as d:
         for f, text in FILES.items():
@@ -429,18 +468,23 @@ def run_case(lmp, ranks, name, lines, expect, words, timeout):
             p = subprocess.run(cmd, cwd=d, capture_output=True, text=True, errors="replace",
                                timeout=timeout, env=env)
         except subprocess.TimeoutExpired:
-            return "hang", ""
+            return "hang", "", ""
     text = p.stdout + p.stderr
+    outcome, message = sort_outcome(p.returncode, text, expect, words)
+    return outcome, message, text
+
+
+def sort_outcome(returncode, text, expect, words):
     errors = [l for l in text.splitlines() if "ERROR" in l]
     warnings = [l for l in text.splitlines() if "WARNING" in l]
     named = lambda found: any(all(w in l for w in words) for l in found)
     if expect == "ok":
-        return ("handled" if p.returncode == 0 else ("wrong" if errors else "crash")), (errors or [""])[0]
+        return ("handled" if returncode == 0 else ("wrong" if errors else "crash")), (errors or [""])[0]
     if errors:
         if expect == "error":
             return ("clear" if named(errors) else "unclear"), errors[0]
         return "unclear", errors[0]    # a warning was the answer, an error stops the run
-    if p.returncode != 0:
+    if returncode != 0:
         return "crash", (text.strip().splitlines() or ["(no output)"])[-1]
     if expect == "warning" and named(warnings):
         return "clear", [l for l in warnings if all(w in l for w in words)][0]
@@ -455,26 +499,34 @@ def main():
     ap.add_argument("--only", default="")
     ap.add_argument("--timeout", type=float, default=60.0)
     ap.add_argument("--markdown", help="write the per-case table here")
+    ap.add_argument("--max-length", type=int, default=MAX_MESSAGE,
+                    help="longest message beyond its named values (0: no length check)")
     args = ap.parse_args()
-    counts, rows = {}, []
+    counts, rows, too_long = {}, [], []
     for name, lines, expect, words in CASES:
         if args.only and args.only not in name:
             continue
-        outcome, message = run_case(args.lmp, args.ranks, name, lines, expect, words, args.timeout)
+        outcome, message, text = run_case(args.lmp, args.ranks, name, lines, expect, words, args.timeout)
         counts[outcome] = counts.get(outcome, 0) + 1
+        too_long += [(name, excess, long_one)
+                     for excess, long_one in long_messages(text, expect, words, args.max_length)]
         message = re.sub(r"\s+\(src/[^)]*\)", "", message.replace("|", "/")).strip()
         rows.append((name, outcome, message))
         print(f"{outcome:8s} {name}: {message}", flush=True)
     total = sum(counts.values())
     summary = ", ".join(f"{k} {counts.get(k, 0)}" for k in
                         ("clear", "handled", "unclear", "crash", "hang", "silent", "wrong"))
+    for name, excess, long_one in too_long:
+        print(f"long     {name}: {len(long_one)} characters, {excess} beyond {args.max_length} and its named values: "
+              f"{long_one}")
+    summary += f"; {len(too_long)} message(s) too long" if args.max_length > 0 else ""
     print(f"probe_bad_input: {total} cases on {args.ranks} rank(s): {summary}")
     if args.markdown:
         with open(args.markdown, "w") as out:
             out.write(f"{total} cases on {args.ranks} rank(s): {summary}\n\n| case | outcome | message |\n|---|---|---|\n")
             for name, outcome, message in rows:
                 out.write(f"| {name} | {outcome} | `{message[:160]}` |\n")
-    bad = sum(counts.get(k, 0) for k in ("crash", "hang", "silent", "wrong"))
+    bad = sum(counts.get(k, 0) for k in ("crash", "hang", "silent", "wrong")) + len(too_long)
     sys.exit(1 if bad else 0)
 
 

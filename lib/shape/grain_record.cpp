@@ -34,8 +34,7 @@ CheckedGrain check_grain_record(const ShapeLibrary &library, const GrainRecord &
 {
   if (record.shape < 0 || record.shape > library.size())
     throw ShapeError("shape id " + std::to_string(record.shape) + " is outside 0.." + std::to_string(library.size()) +
-                     " (the library holds " + std::to_string(library.size()) + " shape(s), 0 is a point): load the "
-                     "shapes ('shapes read FILE') before reading the atoms, or use 0 for a point");
+                     ": 'shapes read FILE' before read_data, or 0 for a point");
   if (!(record.mass > 0.0) || !std::isfinite(record.mass))
     throw ShapeError("mass " + number(record.mass) + " must be a finite number > 0");
   const std::array<double, 4> &q = record.quat;

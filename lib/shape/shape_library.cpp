@@ -123,8 +123,8 @@ class LibraryParser {
                                "vertices");
     }
     if (parsed_.empty()) {
-      fail_at(std::max(line_number_, 1), "no shape found (empty library); define at least one block "
-                                         "'shape NAME' / 'radius R' / 'vertices N' / N lines 'x y z' / 'end'");
+      fail_at(std::max(line_number_, 1), "no shape found (empty library); the format is in "
+                                         "doc/shape_library_format.md");
     }
     return parsed_;
   }
@@ -143,7 +143,7 @@ class LibraryParser {
     char byte[8];
     std::snprintf(byte, sizeof byte, "0x%02x", static_cast<unsigned char>(line[at]));
     fail("column " + std::to_string(at + 1) + " holds the control byte " + byte +
-         "; a shape library is plain text: check that this is the right file");
+         "; a shape library is plain text");
   }
 
   bool expecting_vertices() const
@@ -157,7 +157,7 @@ class LibraryParser {
       if (is_keyword(tokens[0])) {
         fail("shape " + in_quotes(block_.name) + " declares " + std::to_string(block_.declared_vertices) +
              " vertices but " + in_quotes(tokens[0]) + " came after " + std::to_string(block_.points.size()) +
-             "; give exactly that many lines 'x y z' or correct the count");
+             "; correct the count or the lines 'x y z'");
       }
       read_vertex(tokens);
       return;
@@ -530,8 +530,7 @@ void ShapeLibrary::append(const ShapeLibrary &other)
     const int taken = name.empty() ? 0 : find(name);
     if (taken != 0) {
       throw ShapeError("shape name " + in_quotes(name) + " is already used by shape id " + std::to_string(taken) +
-                       "; rename one of the two shapes in its file (names must be unique across all "
-                       "loaded libraries)");
+                       "; rename one of them");
     }
   }
   for (int id = 1; id <= other.size(); ++id) add(other.shapes_[id - 1], other.names_[id - 1]);

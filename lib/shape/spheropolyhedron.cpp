@@ -71,7 +71,7 @@ void check_input(const std::vector<Vec3> &points, double radius)
   }
   if (radius > kMaxLength) {
     throw ShapeError("rounding radius " + describe(radius) + " is above the supported " + describe(kMaxLength) +
-                     "; use a larger length unit so that the grain is smaller in number");
+                     "; use a larger length unit");
   }
   if (points.empty()) throw ShapeError("no points given; give at least one point (a sphere)");
   for (size_t i = 0; i < points.size(); ++i) {
@@ -80,10 +80,8 @@ void check_input(const std::vector<Vec3> &points, double radius)
                        " is not finite; give finite coordinates");
     }
     if (points[i].cwiseAbs().maxCoeff() > kMaxLength) {
-      throw ShapeError("point " + std::to_string(i + 1) + " " + describe(points[i]) +
-                       " has a coordinate beyond +-" + describe(kMaxLength) +
-                       "; move the shape near the origin (its position does not matter) or use a "
-                       "larger length unit");
+      throw ShapeError("point " + std::to_string(i + 1) + " " + describe(points[i]) + " is beyond +-" +
+                       describe(kMaxLength) + ": centre the shape or use a larger unit");
     }
   }
 }
@@ -368,9 +366,8 @@ void check_grain_size(double length, size_t point_count)
                      "are not coplanar");
   }
   if (length < kMinLength) {
-    throw ShapeError("the grain size " + describe(length) + " (largest distance of a point from the points' "
-                     "centroid, or the radius if larger) is below the supported " + describe(kMinLength) +
-                     "; use a smaller length unit so that the grain is larger in number");
+    throw ShapeError("the grain size " + describe(length) + " is below the supported " + describe(kMinLength) +
+                     "; use a smaller length unit");
   }
 }
 
@@ -403,8 +400,8 @@ Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double r
     case Dimension::line:
       if (radius <= 0.0) {
         throw ShapeError(std::to_string(distinct.size()) +
-                         " collinear points with radius 0 have no volume; give a radius > 0 (a "
-                         "spherocylinder) or add a point off the line");
+                         " collinear points with radius 0 have no volume; give a radius > 0 or a point off the "
+                         "line");
       }
       if (radius < kMinThickness * size) {
         throw ShapeError("the radius " + describe(radius) + " of these " + std::to_string(distinct.size()) +
@@ -416,8 +413,7 @@ Spheropolyhedron make_spheropolyhedron(const std::vector<Vec3> &points, double r
       break;
     case Dimension::flat:
       throw ShapeError(std::to_string(distinct.size()) +
-                       " coplanar points form a flat point set (no volume); add a point off "
-                       "their plane, or for a thin plate give vertices on both of its faces");
+                       " coplanar points form a flat point set (no volume); add a point off their plane");
     case Dimension::solid:
       build_polyhedron_core(shape, distinct, tolerance);
       break;
@@ -438,14 +434,11 @@ GrainInertia checked_grain_inertia(const Spheropolyhedron &shape, double mass, c
   grain.inertia = (mass / shape.volume) * shape.principal_inertia;
   if (!usable(grain.mass) || !usable(grain.inertia[0]) || !usable(grain.inertia[1]) || !usable(grain.inertia[2])) {
     throw ShapeError(given + " gives a grain of mass " + describe(grain.mass) + " and moments of inertia " +
-                     describe(grain.inertia) + ", not all finite positive numbers (shape volume " +
-                     describe(shape.volume) + "); give a value that keeps them in the range of doubles, "
-                     "or change the units");
+                     describe(grain.inertia) + ", not all finite positive numbers; change the units");
   }
   if (mass < kMinBodyMass || mass > kMaxBodyMass)
-    throw ShapeError(given + " gives a grain of mass " + describe(mass) + ", outside the " + describe(kMinBodyMass) +
-                     " to " + describe(kMaxBodyMass) + " the solver supports (it squares impulses of the order of a "
-                     "grain's momentum); change the mass unit");
+    throw ShapeError(given + " gives a grain of mass " + describe(mass) + ", outside the solver's " +
+                     describe(kMinBodyMass) + " to " + describe(kMaxBodyMass) + "; change the mass unit");
   return grain;
 }
 

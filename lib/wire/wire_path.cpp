@@ -259,17 +259,17 @@ PolylinePath read_polyline(const std::string &text, const std::string &source_na
     if (values.empty()) continue;    // blank or comment
     if (values.size() != 3)
       throw WirePathError(place + "expected three numbers 'x y z', got " + std::to_string(values.size()) +
-                          " word(s): " + quoted_line(line) + " (comments start with '#')");
+                          " word(s): " + quoted_line(line));
     Vec3 point;
     for (int d = 0; d < 3; d++) {
       const std::string &word = values[d];
       if (!is_decimal(word))
-        throw WirePathError(place + "'" + word.substr(0, 40) + "' is not a number (x y z are decimal numbers such "
-                            "as 1.5 or -2e-3): " + quoted_line(line) + " (comments start with '#')");
+        throw WirePathError(place + "'" + word.substr(0, 40) + "' is not a number such as 1.5 or -2e-3: " +
+                            quoted_line(line));
       point[d] = std::strtod(word.c_str(), nullptr);
       if (!std::isfinite(point[d]))
-        throw WirePathError(place + word.substr(0, 40) + " is beyond the range of double precision numbers "
-                            "(about 1.8e308): " + quoted_line(line));
+        throw WirePathError(place + word.substr(0, 40) + " is beyond the range of doubles (1.8e308): " +
+                            quoted_line(line));
     }
     path.points.push_back(point);
   }

@@ -120,11 +120,11 @@ TEST(ShapeSizeLimits, TinyShapesAreRefusedNamingTheSize)
 TEST(ShapeSizeLimits, HugeCoordinatesAndRadiiAreRefusedNamingTheValue)
 {
   for (const char *side : {"1e31", "1e150", "1e200"}) {
-    EXPECT_HAS(read_error(cube_file("big", side)), "has a coordinate beyond +-1e+30; move the shape near the origin");
+    EXPECT_HAS(read_error(cube_file("big", side)), "is beyond +-1e+30: centre the shape or use a larger unit");
   }
   auto cube = scaled_unit_cube(1.0);
   cube[3] = Vec3(0, 1e300, 0);
-  EXPECT_HAS(shape_error(cube, 0.0), "point 4 (0, 1e+300, 0) has a coordinate beyond +-1e+30");
+  EXPECT_HAS(shape_error(cube, 0.0), "point 4 (0, 1e+300, 0) is beyond +-1e+30");
   EXPECT_HAS(read_error(cube_file("r", "1", "1e300")), "rounding radius 1e+300 is above the supported 1e+30");
   EXPECT_HAS(shape_error({Vec3::Zero()}, 2e30), "rounding radius 2e+30 is above the supported 1e+30");
   // At the limit itself a sphere is fine and finite.
@@ -331,8 +331,8 @@ TEST(GrainInertia, DensityAndMassMustGiveFiniteNormalValues)
   EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, NAN); }), "mass nan is invalid");
   EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-310); }), "gives a grain of mass");
   // normal numbers, but beyond what the solver can square (before: 1000 unconverged sweeps a step)
-  EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-300); }), "mass 1e-300 gives a grain of mass 1e-300, outside the 1e-100 to 1e+100");
-  EXPECT_HAS(error_of([&] { grain_inertia_from_density(cube, 1e101); }), "outside the 1e-100 to 1e+100");
+  EXPECT_HAS(error_of([&] { grain_inertia_from_mass(cube, 1e-300); }), "mass 1e-300 gives a grain of mass 1e-300, outside the solver's 1e-100 to 1e+100");
+  EXPECT_HAS(error_of([&] { grain_inertia_from_density(cube, 1e101); }), "outside the solver's 1e-100 to 1e+100");
   EXPECT_NO_THROW(grain_inertia_from_mass(cube, 1e-100));
   EXPECT_NO_THROW(grain_inertia_from_mass(cube, 1e100));
 }
