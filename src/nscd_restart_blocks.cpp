@@ -53,7 +53,7 @@ std::string with_header(std::int32_t format, const std::string &payload)
 
 // The block's format from its mark, refused if newer than this build's; from `sized_since`
 // on, the reader is limited to the size the block states.
-std::int32_t open_block(BlockReader &in, std::int32_t newest, std::int32_t sized_since, const char *what)
+std::int32_t open_block(BlockReader &in, std::int32_t newest, std::int32_t sized_since)
 {
   const std::int32_t format = in.version();
   if (format > newest)
@@ -120,7 +120,7 @@ SolverBlock read_solver_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   SolverBlock out;
-  out.format = open_block(in, SOLVER_FORMAT, 3, "the contacts' impulses");    // 3 and 4: one layout
+  out.format = open_block(in, SOLVER_FORMAT, 3);    // 3 and 4: one layout
   if (out.format < 3) {    // no size: the stored count cannot be checked
     out.read = false;
     return out;
@@ -234,7 +234,7 @@ WireBlock read_wire_block(const char *block, std::size_t available)
     }
   }
   BlockReader in(block, available);
-  out.format = open_block(in, WIRE_FORMAT, 3, "the wire's state");
+  out.format = open_block(in, WIRE_FORMAT, 3);
   if (out.format < 3)    // formats 1 and 2 had no mark: this one is not ours
     throw Damaged("format " + std::to_string(out.format) + " of fix wire never had this mark");
   out.dt = in.value<double>("the substep");
@@ -275,7 +275,7 @@ WallBlock read_wall_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   WallBlock out;
-  out.format = open_block(in, WALL_FORMAT, 2, "the wall");
+  out.format = open_block(in, WALL_FORMAT, 2);
   const double kind = in.value<double>("the wall's kind");
   if ((kind != 0.0 && kind != 1.0) || std::signbit(kind))    // exactly as written (not -0)
     throw Damaged("the wall's kind is " + number(kind) + ", not 0 (plane) or 1 (cylinder)");
@@ -301,7 +301,7 @@ PlateBlock read_plate_block(const char *block, std::size_t available)
 {
   BlockReader in(block, available);
   PlateBlock out;
-  out.format = open_block(in, PLATE_FORMAT, 2, "the plate");
+  out.format = open_block(in, PLATE_FORMAT, 2);
   const char *names[4] = {"the plate's z", "the plate's velocity", "the plate's loading time", "the plate's first z"};
   double *values[4] = {&out.z, &out.vz, &out.elapsed, &out.z_start};
   for (int k = 0; k < 4; k++) {
