@@ -42,7 +42,7 @@ struct Simplex {
 
   void keep(std::initializer_list<int> which, std::initializer_list<double> weights)
   {
-    std::array<SimplexVertex, 4> kept;
+    std::array<SimplexVertex, 4> kept = v;    // the entries past `which` are unused
     int n = 0;
     for (int k : which) kept[n++] = v[k];
     n = 0;
