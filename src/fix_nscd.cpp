@@ -104,7 +104,7 @@ struct FixNSCD::Solver {
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N]
                      [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V]
-                     [interpenetration F] [skip_separating yes|no] [write_problem STEP FILE] */
+                     [interpenetration F] [skip_separating yes|no] [slip_guess yes|no] [write_problem STEP FILE] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver(std::make_unique<Solver>()), exchange_every(1), warn_every(1000),
     interpenetration_warning(0.2), smallest_rounding(0.0), warned_depth(0.0), dt(0.0), problem_step(-1),
@@ -202,6 +202,11 @@ bool FixNSCD::set_option(const std::string &key, const char *value)
     if (skip != "yes" && skip != "no")
       error->all(FLERR, "fix nscd: skip_separating '{}' must be yes or no", skip);
     solver->options.skip_separating = skip == "yes";
+  } else if (key == "slip_guess") {
+    const std::string guess = value;
+    if (guess != "yes" && guess != "no")
+      error->all(FLERR, "fix nscd: slip_guess '{}' must be yes or no", guess);
+    solver->options.slip_guess = guess == "yes";
   } else {
     return false;
   }

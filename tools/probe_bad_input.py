@@ -246,6 +246,7 @@ CASES = [
     ("order bogus", deck(BASE, {"fix solver": "fix solver all nscd order bogus"}), "error", ["bogus"]),
     ("check 0", deck(BASE, {"fix solver": "fix solver all nscd check 0"}), "error", ["check"]),
     ("skip_separating maybe", deck(BASE, {"fix solver": "fix solver all nscd skip_separating maybe"}), "error", ["maybe"]),
+    ("slip_guess maybe", deck(BASE, {"fix solver": "fix solver all nscd slip_guess maybe"}), "error", ["maybe"]),
     ("exchange 0", deck(BASE, {"fix solver": "fix solver all nscd exchange 0"}), "error", ["exchange"]),
     ("fix nscd bogus keyword", deck(BASE, {"fix solver": "fix solver all nscd bogus 1"}), "error", ["bogus"]),
     ("a value missing at the end", deck(BASE, {"fix solver": "fix solver all nscd tolerance"}), "error", ["tolerance"]),

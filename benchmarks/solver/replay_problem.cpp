@@ -18,7 +18,7 @@
 // a hard step's error sits. doc/nscd_solver.md, "Replaying a step".
 //
 //   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
-//                  [--max-sweeps N] [--skip yes|no] [--coarse C] [--relaxation W]
+//                  [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W]
 //                  [--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS]
 //                  [--worst N]
 // Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip no, no coarse).
@@ -28,7 +28,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -40,7 +42,7 @@ namespace {
 [[noreturn]] void usage(const std::string &why)
 {
   std::fprintf(stderr, "replay_problem: %s\nusage: replay_problem FILE [--method gs|nesterov|nncg] "
-               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--coarse C] [--relaxation W] "
+               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W] "
                "[--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS] [--worst N]\n", why.c_str());
   std::exit(2);
 }
@@ -107,6 +109,26 @@ void print_worst(const ContactProblem &problem, int n)
 
 }    // namespace
 
+// FNV-1a over the bits of every contact's impulse and every body's velocities after the
+// solve: equal digests mean the same answer to the last bit (a change meant to keep the
+// arithmetic, e.g. compiler flags, is checked with it; one that changes round-off is not).
+std::uint64_t digest(const ContactProblem &problem)
+{
+  std::uint64_t hash = 1469598103934665603ull;
+  const auto add = [&hash](const Vec3 &x) {
+    unsigned char bytes[sizeof(double) * 3];
+    const double values[3] = {x[0], x[1], x[2]};
+    std::memcpy(bytes, values, sizeof bytes);
+    for (const unsigned char b : bytes) hash = (hash ^ b) * 1099511628211ull;
+  };
+  for (const Contact &contact : problem.contacts) add(contact.impulse);
+  for (const SolverBody &body : problem.bodies) {
+    add(body.velocity);
+    add(body.angular_velocity);
+  }
+  return hash;
+}
+
 int main(int argc, char **argv)
 {
   if (argc < 2) usage("no file");
@@ -129,6 +151,7 @@ int main(int argc, char **argv)
     else if (key == "--check") options.check_every = std::atoi(value.c_str());
     else if (key == "--max-sweeps") options.max_sweeps = std::atoi(value.c_str());
     else if (key == "--skip") options.skip_separating = value == "yes";
+    else if (key == "--slip-guess") options.slip_guess = value == "yes";
     else if (key == "--coarse") options.coarse_cell = std::atof(value.c_str());
     else if (key == "--relaxation") options.relaxation = std::atof(value.c_str());
     else if (key == "--order") {
@@ -167,6 +190,8 @@ int main(int argc, char **argv)
               "residual %.6e%s, %.2f ms (best of %d)\n", argv[1], file.problem.bodies.size(),
               file.problem.contacts.size(), active, report.terms.sticking, report.terms.sliding,
               report.sweeps, report.residual, report.converged ? "" : " (not converged)", 1e3 * best, repeat);
+  std::printf("digest of the impulses and velocities at the end: %016llx\n",
+              static_cast<unsigned long long>(digest(problem)));
   if (where) print_where(file, options, where);
   if (worst) print_worst(problem, worst);
   return 0;

@@ -369,9 +369,10 @@ void ContactProblem::relax(Row &row)
 {
   if (row.inert) return;
   const Vec3 u_free = local_velocity(row) - row.delassus * row.impulse;
+  const Vec3 *slip_guess = options_.slip_guess && row.regime == ContactRegime::slip ? &row.impulse : nullptr;
   const LocalSolution local =
       row.normal_only ? solve_normal_only(row.delassus(0, 0), u_free, row.mu)
-                      : solve_local_coulomb(row.delassus, row.delassus_inverse, u_free, row.mu);
+                      : solve_local_coulomb(row.delassus, row.delassus_inverse, u_free, row.mu, slip_guess);
   if (!local.exact) ++local_failures_;
   const double omega = options_.relaxation;
   const Vec3 impulse = omega * local.impulse + (1.0 - omega) * row.impulse;

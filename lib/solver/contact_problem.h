@@ -148,6 +148,11 @@ struct SolverOptions {
   // until its effect on the column's outcome is settled (doc/nscd_solver.md, "Skipping
   // separating contacts"). false: every sweep relaxes every contact.
   bool skip_separating = false;
+  // A sliding contact's local solve starts Newton from its last slip direction instead of
+  // sampling all 16 brackets (solve_local_coulomb's slip_guess): the same local solution
+  // to round-off where it is unique, cheaper; the trajectory changes at round-off, so off by
+  // default until its effect on the outcome is settled (doc/nscd_solver.md, "Slip guess").
+  bool slip_guess = false;
   double tolerance = 1e-6;     // on the scale-free residual (see ResidualTerms)
   int max_sweeps = 1000;
   // solve() evaluates the residual (about the cost of a sweep) before the first sweep and

@@ -109,6 +109,15 @@ int candidate_slip_angles(const TrigPolynomial2 &g, std::array<double, 4> &angle
   return n_angles;
 }
 
+// The direction `from` turned by psi, given as t = tan(psi / 2): cos psi = (1 - t^2) / (1 + t^2),
+// sin psi = 2 t / (1 + t^2), no sine or cosine evaluated.
+Direction turn(Direction from, double t)
+{
+  const double scale = 1.0 / (1.0 + t * t);
+  const double cos_psi = (1.0 - t * t) * scale, sin_psi = 2.0 * t * scale;
+  return Direction{from.c * cos_psi - from.s * sin_psi, from.s * cos_psi + from.c * sin_psi};
+}
+
 // Fast path: sign changes of g on 16 sample angles bracket its simple roots, each refined
 // by Newton safeguarded with bisection. Roots closer together than the sample spacing
 // (near-tangent cases) can be missed; the caller then falls back to the companion matrix.
@@ -144,12 +153,7 @@ int bracketed_slip_directions(const TrigPolynomial2 &g, Directions &directions)
     }
     if ((values[k] > 0.0) == (values[k + 1] > 0.0) || values[k + 1] == 0.0) continue;
     const Direction middle = samples.middle[k];
-    const auto turned = [&middle](double t) {
-      const double scale = 1.0 / (1.0 + t * t);
-      const double cos_psi = (1.0 - t * t) * scale, sin_psi = 2.0 * t * scale;
-      return Direction{middle.c * cos_psi - middle.s * sin_psi,
-                       middle.s * cos_psi + middle.c * sin_psi};
-    };
+    const auto turned = [&middle](double t) { return turn(middle, t); };
     double low = -samples.t_edge, high = samples.t_edge;
     const bool rising = values[k] < 0.0;
     // Start from the secant through the bracket ends (closer than the middle): psi / 2 is
@@ -173,6 +177,27 @@ int bracketed_slip_directions(const TrigPolynomial2 &g, Directions &directions)
     directions[n_found++] = d;
   }
   return n_found;
+}
+
+// Newton on g from a guessed direction (the contact's slip direction of the sweep before),
+// on t = tan(psi / 2) with phi = guess + psi as in bracketed_slip_directions. False if an
+// iterate leaves |psi| < pi / 2 or 8 iterations do not converge: the caller then samples.
+bool slip_direction_near(const TrigPolynomial2 &g, Direction guess, Direction &d)
+{
+  double t = 0.0;
+  d = guess;
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    const double value = g.value(d.c, d.s);
+    if (value == 0.0) return true;
+    const double slope = g.derivative(d.c, d.s) * 2.0 / (1.0 + t * t);    // dg/dt
+    if (slope == 0.0) return false;
+    const double newton_step = -value / slope;
+    t += newton_step;
+    if (!(std::abs(t) < 1.0)) return false;
+    d = turn(guess, t);
+    if (std::abs(newton_step) <= 0.5e-15) return true;
+  }
+  return false;
 }
 
 double polish_root(const TrigPolynomial2 &g, double phi)
@@ -230,11 +255,25 @@ bool best_slip(const Mat3 &W, const Vec3 &u_free, double mu, const Directions &d
   return !std::isinf(best_normal);
 }
 
-LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free, double mu)
+LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free, double mu,
+                         const Vec3 *slip_guess)
 {
   const TrigPolynomial2 g = slip_direction_condition(W, u_free, mu);
   LocalSolution best;
   best.regime = ContactRegime::slip;
+  if (slip_guess != nullptr) {
+    // The guess is an impulse P = P_n (1, -mu s): s is along -P_t.
+    const double tangential = std::sqrt((*slip_guess)[1] * (*slip_guess)[1] + (*slip_guess)[2] * (*slip_guess)[2]);
+    Direction near;
+    if (tangential > 0.0 &&
+        slip_direction_near(g, {-(*slip_guess)[1] / tangential, -(*slip_guess)[2] / tangential}, near)) {
+      const SlipCandidate candidate = evaluate_slip(W, u_free, mu, near);
+      if (candidate.admissible) {
+        best.impulse = candidate.impulse;
+        return best;
+      }
+    }
+  }
   Directions directions;
   int n_directions = bracketed_slip_directions(g, directions);
   if (best_slip(W, u_free, mu, directions, n_directions, best.impulse)) return best;
@@ -260,7 +299,7 @@ inline double tangential_norm(const Vec3 &x) { return std::sqrt(x[1] * x[1] + x[
 }    // namespace
 
 LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free,
-                                  double mu)
+                                  double mu, const Vec3 *slip_guess)
 {
   LocalSolution solution;
   if (u_free[0] >= 0.0) return solution;    // separating: open, P = 0
@@ -280,7 +319,7 @@ LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Ve
     solution.regime = ContactRegime::stick;
     return solution;
   }
-  return solve_slip(W, W_inverse, u_free, mu);
+  return solve_slip(W, W_inverse, u_free, mu, slip_guess);
 }
 
 Vec3 project_on_coulomb_cone(const Vec3 &x, double mu)

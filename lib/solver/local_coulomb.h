@@ -46,8 +46,13 @@ struct LocalSolution {
 // at once from the eigenvalues of a degree-4 companion matrix and polished by Newton. When
 // several roots are admissible (possible only when mu |W_nt| is comparable to W_nn) the one
 // with the smallest normal impulse is taken.
+// slip_guess (optional, SolverOptions::slip_guess): the contact's impulse when it last
+// slid. Newton then starts from its slip direction (along -P_t) and, if that converges to
+// an admissible root, takes it without sampling: the same solution to round-off where the
+// slip solution is unique, a few times cheaper; where several are admissible, the one
+// continuing the last (not necessarily the smallest normal impulse).
 LocalSolution solve_local_coulomb(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_free,
-                                  double mu);
+                                  double mu, const Vec3 *slip_guess = nullptr);
 
 // Projection onto the Coulomb cone K_mu = {x : |x_t| <= mu x_n}.
 Vec3 project_on_coulomb_cone(const Vec3 &x, double mu);

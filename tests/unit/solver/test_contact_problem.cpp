@@ -139,14 +139,15 @@ struct InclineRun {
   double max_spin = 0.0;
 };
 
-InclineRun run_block_on_incline(double alpha, double mu, int steps, double dt)
+InclineRun run_block_on_incline(double alpha, double mu, int steps, double dt, bool slip_guess = false)
 {
   BoxColumn column;
   column.floor_friction = mu;
   column.gravity = kGravity * Vec3(std::sin(alpha), 0.0, -std::cos(alpha));
   column.stack({1.5}, Vec3(0.4, 0.3, 0.25));
   const Vec3 start = column.boxes[0].pose.position;
-  const SolverOptions options = tight_options(dt);
+  SolverOptions options = tight_options(dt);
+  options.slip_guess = slip_guess;
   ContactProblem problem;
   InclineRun run;
   for (int step = 0; step < steps; ++step) {
@@ -173,14 +174,17 @@ TEST(ContactProblem, BlockOnInclineSlidesWithCoulombAcceleration)
 {
   const double mu = 0.5, alpha = 35.0 * kPi / 180.0, dt = 1e-3;    // tan(alpha) = 0.70
   const int steps = 300;
-  const InclineRun run = run_block_on_incline(alpha, mu, steps, dt);
-  const double expected = kGravity * (std::sin(alpha) - mu * std::cos(alpha));
-  const double measured = run.velocity.x() / (steps * dt);
-  EXPECT_NEAR(measured, expected, 1e-9 * expected);
-  EXPECT_LT(std::abs(run.velocity.y()) + std::abs(run.velocity.z()), 1e-12);
-  EXPECT_LT(run.max_spin, 1e-9);
-  // theta = 0.5 integrates the constant acceleration exactly: x = a t^2 / 2.
-  EXPECT_NEAR(run.displacement.x(), 0.5 * expected * std::pow(steps * dt, 2), 1e-9);
+  // With slip_guess the four sliding corners start Newton from their last slip direction.
+  for (const bool slip_guess : {false, true}) {
+    const InclineRun run = run_block_on_incline(alpha, mu, steps, dt, slip_guess);
+    const double expected = kGravity * (std::sin(alpha) - mu * std::cos(alpha));
+    const double measured = run.velocity.x() / (steps * dt);
+    EXPECT_NEAR(measured, expected, 1e-9 * expected) << slip_guess;
+    EXPECT_LT(std::abs(run.velocity.y()) + std::abs(run.velocity.z()), 1e-12) << slip_guess;
+    EXPECT_LT(run.max_spin, 1e-9) << slip_guess;
+    // theta = 0.5 integrates the constant acceleration exactly: x = a t^2 / 2.
+    EXPECT_NEAR(run.displacement.x(), 0.5 * expected * std::pow(steps * dt, 2), 1e-9) << slip_guess;
+  }
 }
 
 TEST(ContactProblem, SphereRollsDownAnInclineWithoutSlipping)
@@ -206,17 +210,20 @@ TEST(ContactProblem, SphereOnSteepInclineSlidesAndSpinsUpByFriction)
   // mu < (2/7) tan(alpha): slipping. a = g (sin - mu cos), angular acc = (5/2) mu g cos / R.
   const double alpha = 40.0 * kPi / 180.0, mu = 0.1, dt = 1e-3;
   const Vec3 gravity = kGravity * Vec3(std::sin(alpha), 0.0, -std::cos(alpha));
-  Sphere sphere;
-  sphere.pose.position = Vec3(0.0, 0.0, sphere.radius);
-  const SolverOptions options = tight_options(dt);
-  const int steps = 200;
-  for (int step = 0; step < steps; ++step)
-    ASSERT_TRUE(step_sphere_on_floor(sphere, gravity, mu, options).converged);
-  const double t = steps * dt;
-  const double a = kGravity * (std::sin(alpha) - mu * std::cos(alpha));
-  const double spin_rate = 2.5 * mu * kGravity * std::cos(alpha) / sphere.radius;
-  EXPECT_NEAR(sphere.velocity.x(), a * t, 1e-12 * a * t);
-  EXPECT_NEAR(sphere.angular_velocity.y(), spin_rate * t, 1e-12 * spin_rate * t);
+  for (const bool slip_guess : {false, true}) {
+    Sphere sphere;
+    sphere.pose.position = Vec3(0.0, 0.0, sphere.radius);
+    SolverOptions options = tight_options(dt);
+    options.slip_guess = slip_guess;
+    const int steps = 200;
+    for (int step = 0; step < steps; ++step)
+      ASSERT_TRUE(step_sphere_on_floor(sphere, gravity, mu, options).converged);
+    const double t = steps * dt;
+    const double a = kGravity * (std::sin(alpha) - mu * std::cos(alpha));
+    const double spin_rate = 2.5 * mu * kGravity * std::cos(alpha) / sphere.radius;
+    EXPECT_NEAR(sphere.velocity.x(), a * t, 1e-12 * a * t) << slip_guess;
+    EXPECT_NEAR(sphere.angular_velocity.y(), spin_rate * t, 1e-12 * spin_rate * t) << slip_guess;
+  }
 }
 
 TEST(ContactProblem, StackOfThreeBoxesCarriesTheWeightAbove)
