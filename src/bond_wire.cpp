@@ -121,10 +121,7 @@ void BondWire::coeff(int narg, char **arg)
   if (narg == 5) {
     if (strcmp(arg[3], "string") != 0)
       error->all(FLERR, "bond_coeff wire: unknown keyword '{}' (expected 'string yes|no')", arg[3]);
-    const std::string value = arg[4];
-    if (value != "yes" && value != "no")
-      error->all(FLERR, "bond_coeff wire: string '{}' must be yes or no", value);
-    string = value == "yes";
+    string = yes_or_no(lmp, "bond_coeff wire", "string", arg[4]);
   }
   for (int i = ilo; i <= ihi; i++) {
     k_elo[i] = stiffness;

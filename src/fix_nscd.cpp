@@ -198,15 +198,9 @@ bool FixNSCD::set_option(const std::string &key, const char *value)
   } else if (key == "coarse") {
     solver->options.coarse_cell = coarse_cell_of(value, lmp);
   } else if (key == "skip_separating") {
-    const std::string skip = value;
-    if (skip != "yes" && skip != "no")
-      error->all(FLERR, "fix nscd: skip_separating '{}' must be yes or no", skip);
-    solver->options.skip_separating = skip == "yes";
+    solver->options.skip_separating = yes_or_no(lmp, "fix nscd", key, value);
   } else if (key == "slip_guess") {
-    const std::string guess = value;
-    if (guess != "yes" && guess != "no")
-      error->all(FLERR, "fix nscd: slip_guess '{}' must be yes or no", guess);
-    solver->options.slip_guess = guess == "yes";
+    solver->options.slip_guess = yes_or_no(lmp, "fix nscd", key, value);
   } else {
     return false;
   }

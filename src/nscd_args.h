@@ -71,6 +71,13 @@ inline long long whole(LAMMPS *lmp, const std::string &where, const std::string 
   return n;
 }
 
+// A yes|no value of `key`: true for yes; anything else stops naming it.
+inline bool yes_or_no(LAMMPS *lmp, const std::string &where, const std::string &key, const std::string &text)
+{
+  if (text != "yes" && text != "no") lmp->error->all(FLERR, "{}: {} '{}' must be yes or no", where, key, text);
+  return text == "yes";
+}
+
 // The value after the keyword arg[iarg] of `where` (e.g. "fix nscd/plate"), once the keyword
 // is known to be one of `known`: a misspelled keyword is named as such, not as a value that
 // is not a number. Stops naming the keyword and the list, or the keyword without a value.

@@ -107,8 +107,6 @@ void print_worst(const ContactProblem &problem, int n)
               std::sqrt(std::max(0.0, error_squared * (1 - held)) / (scale_squared + 1e-300)));
 }
 
-}    // namespace
-
 // FNV-1a over the bits of every contact's impulse and every body's velocities after the
 // solve: equal digests mean the same answer to the last bit (a change meant to keep the
 // arithmetic, e.g. compiler flags, is checked with it; one that changes round-off is not).
@@ -128,6 +126,8 @@ std::uint64_t digest(const ContactProblem &problem)
   }
   return hash;
 }
+
+}    // namespace
 
 int main(int argc, char **argv)
 {

@@ -153,13 +153,12 @@ int bracketed_slip_directions(const TrigPolynomial2 &g, Directions &directions)
     }
     if ((values[k] > 0.0) == (values[k + 1] > 0.0) || values[k + 1] == 0.0) continue;
     const Direction middle = samples.middle[k];
-    const auto turned = [&middle](double t) { return turn(middle, t); };
     double low = -samples.t_edge, high = samples.t_edge;
     const bool rising = values[k] < 0.0;
     // Start from the secant through the bracket ends (closer than the middle): psi / 2 is
     // within the bracket as |psi / 2| < tan(spacing / 4).
     double t = 0.5 * spacing * (values[k] / (values[k] - values[k + 1]) - 0.5);
-    Direction d = turned(t);
+    Direction d = turn(middle, t);
     for (int iteration = 0; iteration < 60; ++iteration) {
       const double value = g.value(d.c, d.s);
       if (value == 0.0) break;
@@ -167,12 +166,12 @@ int bracketed_slip_directions(const TrigPolynomial2 &g, Directions &directions)
       const double slope = g.derivative(d.c, d.s) * 2.0 / (1.0 + t * t);    // dg/dt
       const double newton_step = slope != 0.0 ? -value / slope : high - low;
       if (std::abs(newton_step) <= 0.5e-15) {
-        d = turned(t + newton_step);    // converged: the step is below round-off of phi
+        d = turn(middle, t + newton_step);    // converged: the step is below round-off of phi
         break;
       }
       const double next = t + newton_step;
       t = next > low && next < high ? next : 0.5 * (low + high);
-      d = turned(t);
+      d = turn(middle, t);
     }
     directions[n_found++] = d;
   }
@@ -211,6 +210,10 @@ double polish_root(const TrigPolynomial2 &g, double phi)
   }
   return phi;
 }
+
+// |(x_1, x_2)|: sqrt of the sum of squares, not std::hypot (whose overflow and underflow
+// guards cost ~10 ns a call; impulses and velocities are far from 1e+-154).
+inline double tangential_norm(const Vec3 &x) { return std::sqrt(x[1] * x[1] + x[2] * x[2]); }
 
 struct SlipCandidate {
   Vec3 impulse;
@@ -263,7 +266,7 @@ LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_fre
   best.regime = ContactRegime::slip;
   if (slip_guess != nullptr) {
     // The guess is an impulse P = P_n (1, -mu s): s is along -P_t.
-    const double tangential = std::sqrt((*slip_guess)[1] * (*slip_guess)[1] + (*slip_guess)[2] * (*slip_guess)[2]);
+    const double tangential = tangential_norm(*slip_guess);
     Direction near;
     if (tangential > 0.0 &&
         slip_direction_near(g, {-(*slip_guess)[1] / tangential, -(*slip_guess)[2] / tangential}, near)) {
@@ -291,10 +294,6 @@ LocalSolution solve_slip(const Mat3 &W, const Mat3 &W_inverse, const Vec3 &u_fre
   }
   return best;
 }
-
-// |(x_1, x_2)|: sqrt of the sum of squares, not std::hypot (whose overflow and underflow
-// guards cost ~10 ns a call; impulses and velocities are far from 1e+-154).
-inline double tangential_norm(const Vec3 &x) { return std::sqrt(x[1] * x[1] + x[2] * x[2]); }
 
 }    // namespace
 
