@@ -24,7 +24,7 @@ Each case is a small deck with one bad value (or a bad combination). Outcomes:
   silent    it runs to the end without the error or warning it should give
   handled   a case that must run (an edge value that is fine) ran and passed its check
   wrong     such a case ran but failed its check
-Exit status 1 if any case is crash, hang, silent or wrong. doc/robustness.md has the table.
+Exit status 1 if any case is unclear, crash, hang, silent or wrong. doc/robustness.md has the table.
 
 Message length (LAMMPS' rule of at most two printed lines, doc/build.md): every ERROR line a
 case prints, and the WARNING a warning case expects, must hold a message (the text between
@@ -63,9 +63,18 @@ at = data.find(marker)
 while at >= 0 and struct.unpack_from("i", data, at + len(marker) + 4)[0] != 0x4E534344:
     at = data.find(marker, at + 1)
 block = at + len(marker) + 4
-fields = {"mark": ("i", 0, 7), "count": ("q", 16, 10**9), "size": ("q", 8, 4), "nan": ("d", 32 + 24, float("nan")),
+fields = {"mark": ("i", 0, 7), "count": ("q", 16, 10**9), "size": ("q", 8, 4),
           "kind": ("d", 16, 2.0), "format": ("i", 4, 999), "dt": ("d", 24, 5e-315),
           "wire_count": ("q", 24, 10**9), "wire_dt": ("d", 16, 5e-315)}
+if what == "atom_nan":
+    # fix nscd's impulses travel with the atoms: an atom's values {size, format 1, count k,
+    # k records of 6 doubles (two tags, a feature, the impulse)}; NaN into the first impulse
+    for k in range(1, 64):
+        at = data.find(struct.pack("3d", 3 + 6 * k, 1.0, k))
+        if at >= 0: break
+    else: sys.exit("damage.py: no atom holds a warm-start record")
+    struct.pack_into("d", data, at + 24 + 24, float("nan"))
+    open(path, "wb").write(data); sys.exit(0)
 form, offset, value = fields[what]
 struct.pack_into(form, data, block + offset, value)
 open(path, "wb").write(data)
@@ -403,7 +412,7 @@ CASES = [
     # --- damaged and cut restart files (damage.py, through `shell`)
     ("restart: fix nscd count too large", damaged("solver", "nscd", "count"), "error", ["fix nscd solver", "counts 1000000000"]),
     ("restart: fix nscd foreign mark", damaged("solver", "nscd", "mark"), "error", ["fix nscd solver", "mark"]),
-    ("restart: fix nscd NaN impulse", damaged("solver", "nscd", "nan"), "error", ["fix nscd solver", "nan"]),
+    ("restart: fix nscd NaN impulse", damaged("solver", "nscd", "atom_nan"), "error", ["fix nscd solver", "nan"]),
     ("restart: fix nscd size", damaged("solver", "nscd", "size"), "error", ["fix nscd solver", "bytes"]),
     ("restart: fix nscd denormal timestep", damaged("solver", "nscd", "dt"), "error", ["fix nscd solver", "timestep is 5.00000000228"]),
     ("restart: fix wire count too large", damaged("w", "wire", "wire_count"), "error", ["fix wire w", "counts 1000000000"]),
@@ -527,7 +536,7 @@ def main():
             out.write(f"{total} cases on {args.ranks} rank(s): {summary}\n\n| case | outcome | message |\n|---|---|---|\n")
             for name, outcome, message in rows:
                 out.write(f"| {name} | {outcome} | `{message[:160]}` |\n")
-    bad = sum(counts.get(k, 0) for k in ("crash", "hang", "silent", "wrong")) + len(too_long)
+    bad = sum(counts.get(k, 0) for k in ("unclear", "crash", "hang", "silent", "wrong")) + len(too_long)
     sys.exit(1 if bad else 0)
 
 
