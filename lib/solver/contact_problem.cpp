@@ -365,19 +365,23 @@ void ContactProblem::apply_impulse_change(const Row &row, const Vec3 &dP)
   }
 }
 
+// Most contacts of a step are open (found ahead of impact): no impulse, none after the local
+// solve. Their zero products and zero velocity changes are skipped; adding an exact zero
+// changes no velocity (but the sign of a zero), so the answer is the same.
 void ContactProblem::relax(Row &row)
 {
   if (row.inert) return;
-  const Vec3 u_free = local_velocity(row) - row.delassus * row.impulse;
+  const bool unloaded = row.impulse.isZero(0.0);
+  const Vec3 u_free = unloaded ? local_velocity(row) : Vec3(local_velocity(row) - row.delassus * row.impulse);
   const Vec3 *slip_guess = options_.slip_guess && row.regime == ContactRegime::slip ? &row.impulse : nullptr;
   const LocalSolution local =
       row.normal_only ? solve_normal_only(row.delassus(0, 0), u_free, row.mu)
                       : solve_local_coulomb(row.delassus, row.delassus_inverse, u_free, row.mu, slip_guess);
   if (!local.exact) ++local_failures_;
   const double omega = options_.relaxation;
-  const Vec3 impulse = omega * local.impulse + (1.0 - omega) * row.impulse;
+  const Vec3 impulse = omega == 1.0 ? local.impulse : Vec3(omega * local.impulse + (1.0 - omega) * row.impulse);
   row.step = impulse - row.impulse;
-  apply_impulse_change(row, row.step);
+  if (!row.step.isZero(0.0)) apply_impulse_change(row, row.step);
   row.impulse = impulse;
   row.regime = local.regime;
   sweep_change_ += row.step.squaredNorm();
@@ -445,10 +449,11 @@ void ContactProblem::accelerate(double global_sweep_change)
   }
   for (Row &row : rows_) {
     if (row.inert) continue;
-    if (beta > 0.0) {
+    // An open contact that stayed open: no momentum, nothing to move (see relax()).
+    if (beta > 0.0 && !(row.impulse.isZero(0.0) && row.direction.isZero(0.0))) {
       const Vec3 target = project_on_coulomb_cone(row.impulse + beta * row.direction, row.mu);
       const Vec3 change = target - row.impulse;
-      apply_impulse_change(row, change);
+      if (!change.isZero(0.0)) apply_impulse_change(row, change);
       row.impulse = target;
       row.direction = change + row.step;
     } else {
