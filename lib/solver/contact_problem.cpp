@@ -352,8 +352,11 @@ double ContactProblem::round_off_velocity(const Row &row, const Vec3 &u_free) co
   return kRoundOffVelocity * size;
 }
 
+// A zero change (most open contacts, every sweep) moves no body: adding an exact zero
+// changes no velocity but the sign of a zero, so skipping it keeps the answer.
 void ContactProblem::apply_impulse_change(const Row &row, const Vec3 &dP)
 {
+  if (dP.isZero(0.0)) return;
   const Vec3 world = row.frame.transpose() * dP;
   SolverBody &body_i = bodies[row.i];
   body_i.velocity += row.inv_mass_i.cwiseProduct(world);
@@ -366,8 +369,7 @@ void ContactProblem::apply_impulse_change(const Row &row, const Vec3 &dP)
 }
 
 // Most contacts of a step are open (found ahead of impact): no impulse, none after the local
-// solve. Their zero products and zero velocity changes are skipped; adding an exact zero
-// changes no velocity (but the sign of a zero), so the answer is the same.
+// solve; W P is skipped for them (a zero product, as in apply_impulse_change).
 void ContactProblem::relax(Row &row)
 {
   if (row.inert) return;
@@ -381,7 +383,7 @@ void ContactProblem::relax(Row &row)
   const double omega = options_.relaxation;
   const Vec3 impulse = omega == 1.0 ? local.impulse : Vec3(omega * local.impulse + (1.0 - omega) * row.impulse);
   row.step = impulse - row.impulse;
-  if (!row.step.isZero(0.0)) apply_impulse_change(row, row.step);
+  apply_impulse_change(row, row.step);
   row.impulse = impulse;
   row.regime = local.regime;
   sweep_change_ += row.step.squaredNorm();
@@ -453,7 +455,7 @@ void ContactProblem::accelerate(double global_sweep_change)
     if (beta > 0.0 && !(row.impulse.isZero(0.0) && row.direction.isZero(0.0))) {
       const Vec3 target = project_on_coulomb_cone(row.impulse + beta * row.direction, row.mu);
       const Vec3 change = target - row.impulse;
-      if (!change.isZero(0.0)) apply_impulse_change(row, change);
+      apply_impulse_change(row, change);
       row.impulse = target;
       row.direction = change + row.step;
     } else {
