@@ -72,6 +72,8 @@ struct CreateWire::Request {
   double overlap = 0.1;             // allowed overlap with grains and walls, times the radius
   bool check_overlap = true;
   bool strained = false;            // elements may differ from the rest length
+  bool drop = false;                // lowered until it touches what lies below
+  double dropped = -1.0;            // how far it was (-1: not dropped)
   double rest_length = 0.0;         // of the bond type
   bool mol_given = false;
 
@@ -103,6 +105,11 @@ struct CreateWire::Request {
   tagint first_tag = 0;
 };
 
+struct CreateWire::WireElements {
+  nscd::wire::WirePieces pieces;                 // one element per bond between wire nodes
+  std::vector<std::array<tagint, 2>> bonds;     // its nodes' atom IDs
+};
+
 void CreateWire::broadcast(std::string &text)
 {
   bigint size = (bigint) text.size();
@@ -119,7 +126,7 @@ CreateWire::~CreateWire() = default;
 /* create_wire TYPE loop X Y Z R | helix X Y Z R PITCH | line X1 Y1 Z1 X2 Y2 Z2 | polyline FILE
                bond BTYPE mass M [angle ATYPE] [turns N] [pitch P] [gap DEG] [start DEG]
                [axis AX AY AZ] [nodes N] [mol ID] [radius RW] [overlap TOL|ignore] [strained yes|no]
-               [from ID|last] */
+               [drop yes|no] [from ID|last] */
 void CreateWire::command(int narg, char **arg)
 {
   if (domain->box_exist == 0) error->all(FLERR, "create_wire: define the box first (create_box or read_data)");
@@ -133,6 +140,7 @@ void CreateWire::command(int narg, char **arg)
   if (request->continues()) check_room_at_end();
   lay_out();
   check_nodes_in_box();
+  if (request->drop) drop_onto_what_is_below();
   if (request->check_overlap) {
     check_overlaps();
     check_wire_overlaps();
@@ -162,6 +170,7 @@ void CreateWire::command(int narg, char **arg)
     end = fmt::format("open, last node {:.4g} before the path's end",
                       (r.layout.nodes.back() - r.polyline.points.back()).norm());
   }
+  if (r.dropped >= 0.0) end += fmt::format(", dropped {:.6g} onto what lies below", r.dropped);
   if (comm->me == 0)
     utils::logmesg(lmp, "create_wire: {} ({}): {} nodes (IDs {}..{}, molecule {}), {} elements of "
                    "length {:.10g}, {} joints\n", r.shape_name, end, n, r.first_tag,
@@ -300,12 +309,19 @@ void CreateWire::parse(int narg, char **arg)
       need(1);
       r.strained = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
       iarg += 2;
+    } else if (key == "drop") {
+      need(1);
+      r.drop = utils::logical(FLERR, arg[iarg + 1], false, lmp) != 0;
+      iarg += 2;
     } else {
       error->all(FLERR, "create_wire: unknown keyword '{}'; the "
                  "keywords are listed in doc/create_wire.md, Syntax", key);
     }
   }
   if (r.continues()) {
+    if (r.drop)
+      error->all(FLERR, "create_wire: 'drop' cannot be combined with 'from' (a continued wire starts at its "
+                 "end); remove one");
     if (r.nodes > 0)
       error->all(FLERR, "create_wire: 'nodes' cannot be combined with "
                  "'from'; drop 'nodes' (doc/create_wire.md, Errors)");
@@ -647,8 +663,18 @@ void CreateWire::check_wire_overlaps()
                self.depth, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
   }
 
-  // The wires already there: their nodes and bonds from every rank, each element with its
-  // second node at the image nearest to its first.
+  const WireElements existing = existing_wire_elements(end_elements);
+  const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing.pieces, r.radius, shifts);
+  if (other.depth > allowed)
+    error->all(FLERR, "create_wire {}: overlaps the wire element between atoms ID {} and {} by {:.4g}; see "
+               "doc/create_wire.md, Errors", r.shape_name, existing.bonds[other.b][0], existing.bonds[other.b][1], other.depth);
+}
+
+/* The wires already there, but for the elements in `skip`: their nodes and bonds from every
+   rank (a setup command), each element with its second node at the image nearest to its
+   first. */
+CreateWire::WireElements CreateWire::existing_wire_elements(const std::vector<std::array<tagint, 2>> &skip)
+{
   struct Node {
     tagint tag;
     double x[3];
@@ -663,27 +689,75 @@ void CreateWire::check_wire_overlaps()
   }
   std::map<tagint, nscd::Vec3> where;
   for (const Node &n : gather_records(my_nodes, world, true)) where[n.tag] = vec3(n.x);
-  std::vector<std::array<tagint, 2>> bonds;
-  wire::WirePieces existing;
+  WireElements existing;
   for (const auto &b : gather_records(my_bonds, world, true)) {
     const auto p = where.find(b[0]), q = where.find(b[1]);
     if (p == where.end() || q == where.end()) continue;    // a bond to a grain: not a wire element
     auto same = [&](const std::array<tagint, 2> &e) {
       return (e[0] == b[0] && e[1] == b[1]) || (e[0] == b[1] && e[1] == b[0]);
     };
-    if (std::any_of(end_elements.begin(), end_elements.end(), same)) continue;    // checked above
+    if (std::any_of(skip.begin(), skip.end(), same)) continue;
     double delta[3] = {q->second.x() - p->second.x(), q->second.y() - p->second.y(), q->second.z() - p->second.z()};
     domain->minimum_image(delta);
-    const int first = (int) existing.nodes.size();
-    existing.nodes.push_back(p->second);
-    existing.nodes.push_back(p->second + vec3(delta));
-    existing.elements.push_back({first, first + 1, 0.0});
-    bonds.push_back(b);
+    const int first = (int) existing.pieces.nodes.size();
+    existing.pieces.nodes.push_back(p->second);
+    existing.pieces.nodes.push_back(p->second + vec3(delta));
+    existing.pieces.elements.push_back({first, first + 1, 0.0});
+    existing.bonds.push_back(b);
   }
-  const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing, r.radius, shifts);
-  if (other.depth > allowed)
-    error->all(FLERR, "create_wire {}: overlaps the wire element between atoms ID {} and {} by {:.4g}; see "
-               "doc/create_wire.md, Errors", r.shape_name, bonds[other.b][0], bonds[other.b][1], other.depth);
+  return existing;
+}
+
+/* 'drop yes': the wire as laid out is lowered straight down (-z) until it touches a grain, a
+   wall or plate, or a wire already there: laid on the surface below it, as a string laid
+   on gravel, instead of falling onto it. Each candidate drop is checked as the overlap
+   checks do (every rank its grains, every rank the walls, the other wires gathered once),
+   the deepest overlap reduced over the ranks; the scan steps by the wire's radius (nothing
+   it can meet is thinner than the wire's diameter), then bisects to 1e-6 of the radius. */
+void CreateWire::drop_onto_what_is_below()
+{
+  Request &r = *request;
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  std::vector<nscd::wire::PlacedGrain> grains;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (avec->shape[i] != 0) grains.push_back({&avec->shape_of(i), avec->pose(i)});
+  std::vector<NSCDBoundaryFix *> boundaries;
+  for (Fix *fix : modify->get_fix_list())
+    if (auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix)) boundaries.push_back(boundary_fix);
+  const WireElements existing = existing_wire_elements({});
+  const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, r.layout.nodes);
+  const nscd::wire::WirePieces laid{r.layout.nodes, r.layout.topology.elements};
+
+  auto depth = [&](double drop) {
+    nscd::wire::WirePieces lowered = laid;
+    for (nscd::Vec3 &x : lowered.nodes) x.z() -= drop;
+    double deepest = -1.0;
+    const nscd::wire::ElementOverlap on_grain = nscd::wire::deepest_overlap_with_grains(lowered, r.radius, grains, shifts);
+    if (on_grain.b >= 0) deepest = std::max(deepest, on_grain.depth);
+    const nscd::wire::ElementOverlap on_wire =
+        nscd::wire::deepest_overlap_between(lowered, existing.pieces, r.radius, shifts);
+    if (on_wire.b >= 0) deepest = std::max(deepest, on_wire.depth);
+    for (NSCDBoundaryFix *boundary_fix : boundaries)
+      for (size_t k = 0; k < r.in_box.size(); k++) {
+        const nscd::Vec3 x = r.in_box[k] - drop * nscd::Vec3::UnitZ();
+        deepest = std::max(deepest, -boundary_fix->boundary().touch_sphere(x, r.radius, 0.0).gap);
+      }
+    double everywhere;
+    MPI_Allreduce(&deepest, &everywhere, 1, MPI_DOUBLE, MPI_MAX, world);
+    return everywhere;
+  };
+
+  // down to the box's floor (a periodic box: one box height)
+  double lowest = r.layout.nodes[0].z();
+  for (const nscd::Vec3 &x : r.layout.nodes) lowest = std::min(lowest, x.z());
+  const double max_drop = domain->zperiodic ? domain->zprd : std::max(0.0, lowest - r.radius - domain->boxlo[2]);
+  const nscd::wire::Drop drop = nscd::wire::first_touch_drop(depth, max_drop, r.radius, 1e-6 * r.radius);
+  if (!drop.touched)
+    error->all(FLERR, "create_wire {}: 'drop yes': nothing below the wire within {:.4g} (the box's floor); lay it "
+               "above a grain, wall or wire", r.shape_name, max_drop);
+  for (nscd::Vec3 &x : r.layout.nodes) x.z() -= drop.distance;
+  r.dropped = drop.distance;
+  check_nodes_in_box();
 }
 
 /* Each rank creates the nodes whose positions lie in its sub-domain, with consecutive new

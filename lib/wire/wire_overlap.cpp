@@ -146,4 +146,33 @@ ElementOverlap deepest_overlap_between(const WirePieces &first, const WirePieces
   return deepest;
 }
 
+Drop first_touch_drop(const std::function<double(double)> &depth, double max_drop, double step, double tolerance)
+{
+  Drop drop;
+  if (depth(0.0) > 0.0) {
+    drop.touched = true;
+    return drop;
+  }
+  double clear = 0.0, touching = -1.0;
+  while (clear < max_drop) {
+    const double next = std::min(clear + step, max_drop);
+    if (depth(next) > 0.0) {
+      touching = next;
+      break;
+    }
+    clear = next;
+  }
+  if (touching < 0.0) {
+    drop.distance = max_drop;
+    return drop;
+  }
+  while (touching - clear > tolerance) {
+    const double middle = 0.5 * (clear + touching);
+    (depth(middle) > 0.0 ? touching : clear) = middle;
+  }
+  drop.distance = clear;
+  drop.touched = true;
+  return drop;
+}
+
 }    // namespace nscd::wire

@@ -25,6 +25,7 @@
 #include "shape/spheropolyhedron.h"
 #include "wire/elastic_forces.h"
 
+#include <functional>
 #include <vector>
 
 namespace nscd::wire {
@@ -63,5 +64,19 @@ struct PlacedGrain {
 // each of `shifts` (zero vectors are ignored there): element a, grain b (indices).
 ElementOverlap deepest_overlap_with_grains(const WirePieces &wire, double radius, const std::vector<PlacedGrain> &grains,
                                            const std::vector<Vec3> &shifts);
+
+// How far a wire can be lowered (create_wire's `drop`) before it touches something.
+// `depth(d)` is the deepest overlap of the wire lowered by d with what lies below (<= 0:
+// clear). Scans down from d = 0 in steps of `step`, then halves the last step until it is
+// shorter than `tolerance`: `distance` is the largest drop found clear, within `tolerance`
+// of the first touch. An obstacle thinner than `step` can be stepped over: the caller takes
+// a step below the thinnest thing a wire can meet (the wire's own radius: the wire is 2
+// radii thick). Already overlapping at d = 0: distance 0, touched. Nothing met down to
+// `max_drop`: distance max_drop, not touched.
+struct Drop {
+  double distance = 0.0;
+  bool touched = false;
+};
+Drop first_touch_drop(const std::function<double(double)> &depth, double max_drop, double step, double tolerance);
 
 }    // namespace nscd::wire

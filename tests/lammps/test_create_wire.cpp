@@ -30,8 +30,9 @@
 #include <array>
 #include <cmath>
 #include <fstream>
-#include <set>
 #include <map>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -464,4 +465,46 @@ TEST_F(CreateWireTest, FixWireWarnsAboutAnElementFarFromItsRestLength)
   log = log_of("run 0 post no");
   EXPECT_NE(log.find("1 elements start over 10 % from their rest length, worst 4 x (IDs " + std::to_string(n + 11) +
                      "-" + std::to_string(n + 12) + ")"), std::string::npos) << log;
+}
+
+// 'drop yes' lowers the wire as laid out until it touches what lies below: a floor (the
+// nodes' centres one wire radius above it), a wire already there (the second ring's
+// centre line one diameter above the first's), a grain (touching: 0.01 lower overlaps it).
+// Nothing below and 'from' are refused.
+TEST_F(CreateWireTest, DropLaysTheWireOnWhatLiesBelow)
+{
+  const double r = 0.02;
+  box();
+  commands({"pair_style nscd", "pair_coeff * * 0.5", "fix floor all nscd/wall plane 0 0 0 0 0 1"});
+  const std::string lowered = log_of("create_wire 1 loop 0 0 3 1 bond 1 mass 0.01 radius 0.02 drop yes gap 10");
+  EXPECT_NE(lowered.find("dropped 2.98 onto what lies below"), std::string::npos) << lowered;
+  const tagint first_ring = (tagint) nodes().size();
+  for (const auto &[tag, node] : nodes()) EXPECT_NEAR(node.x[2], r, 1e-6 * r) << tag;
+  run("create_wire 1 loop 0 0 2 1 bond 1 mass 0.01 radius 0.02 drop yes gap 10");
+  for (const auto &[tag, node] : nodes()) EXPECT_NEAR(node.x[2], tag <= first_ring ? r : 3 * r, 1e-5 * r) << tag;
+  commands({"group wire type 1", "delete_atoms group wire bond yes", "unfix floor"});
+
+  commands({"create_atoms 2 single 0 0 1", "shapes assign all shape 1 density 1"});
+  const std::string on_grain = log_of("create_wire 1 loop 0 0 3 0.3 bond 1 mass 0.01 radius 0.02 drop yes gap 10");
+  const size_t at = on_grain.find("dropped ");
+  ASSERT_NE(at, std::string::npos) << on_grain;
+  const double drop = std::stod(on_grain.substr(at + 8));
+  EXPECT_GT(drop, 0.5);
+  EXPECT_LT(drop, 2.0 - r);    // above the grain's centre
+  for (const auto &[tag, node] : nodes()) {
+    if (node.type != 1) continue;
+    EXPECT_NEAR(node.x[2], 3.0 - drop, 1e-5) << tag;    // the log's 6 digits
+  }
+  commands({"group wire type 1", "delete_atoms group wire bond yes"});
+  std::ostringstream lower;
+  lower.precision(17);
+  lower << "create_wire 1 loop 0 0 " << 3.0 - drop - 0.01 << " 0.3 bond 1 mass 0.01 radius 0.02 overlap 0 gap 10";
+  EXPECT_NE(error_of(lower.str()).find("overlaps grain ID"), std::string::npos);
+
+  EXPECT_NE(error_of("create_wire 1 loop 2.5 2.5 3 0.3 bond 1 mass 0.01 radius 0.02 drop yes gap 10")
+                .find("nothing below the wire"),
+            std::string::npos);
+  run("create_wire 1 line 3 -3 4 3 -2 4 bond 1 mass 0.01 radius 0.02");
+  EXPECT_NE(error_of("create_wire 1 line 3 -2 4 3 -1 4 from last drop yes").find("'drop' cannot be combined"),
+            std::string::npos);
 }

@@ -15,6 +15,7 @@
 // lib/wire/wire_overlap: overlaps between wire elements, against closed forms.
 #include "wire/wire_overlap.h"
 #include "wire/wire_path.h"
+#include "../geometry/shapes_for_tests.h"
 
 #include <gtest/gtest.h>
 
@@ -96,4 +97,57 @@ TEST(WireOverlap, CrossingWiresOverlapByTheDiameterLessTheirDistance)
   const ElementOverlap o = deepest_overlap_between(first, far, 0.05, {Vec3(0, 0, -5), Vec3(0, 0, 5)});
   EXPECT_NEAR(o.depth, 0.04, 1e-12);
   EXPECT_EQ(o.shift.z(), -5.0);
+}
+
+// first_touch_drop: a sphere of radius 0.5 whose centre is 2 above a plane touches it after
+// a drop of 1.5; found within the tolerance, from the clear side.
+TEST(WireDrop, SphereAbovePlaneTouchesAfterItsGap)
+{
+  const double r = 0.5, h = 2.0, tolerance = 1e-9;
+  int calls = 0;
+  const Drop drop = first_touch_drop([&](double d) { calls++; return r - (h - d); }, 10.0, 0.025, tolerance);
+  EXPECT_TRUE(drop.touched);
+  EXPECT_LE(drop.distance, h - r);
+  EXPECT_GT(drop.distance, h - r - tolerance);
+  EXPECT_LT(calls, 1.5 / 0.025 + 40);    // the scan, then bisection
+}
+
+// Nothing below: the whole drop, not touched; overlapping already: no drop, touched.
+TEST(WireDrop, NothingBelowOrAlreadyOverlapping)
+{
+  const Drop free_fall = first_touch_drop([](double) { return -1.0; }, 3.0, 0.1, 1e-6);
+  EXPECT_FALSE(free_fall.touched);
+  EXPECT_EQ(free_fall.distance, 3.0);
+  const Drop stuck = first_touch_drop([](double) { return 0.01; }, 3.0, 0.1, 1e-6);
+  EXPECT_TRUE(stuck.touched);
+  EXPECT_EQ(stuck.distance, 0.0);
+}
+
+// A ring of wire (radius 0.05) dropped onto a cube of half-edge 0.5 rounded by 0.05: a ring
+// of radius 0.4 lands on the top face (its centre line 0.05 above the top at 0.55); a ring
+// of radius 1.0 is wider than the cube's diagonal (0.55 sqrt 2 = 0.78) and falls past it.
+TEST(WireDrop, RingLandsOnACubeOrFallsPastIt)
+{
+  const double wire_radius = 0.05, top = 0.55, start = 3.0;
+  const Spheropolyhedron cube = test::make_box(0.5, 0.5, 0.5, 0.05);
+  const std::vector<PlacedGrain> grains = {{&cube, test::place(cube, Vec3::Zero())}};
+  for (double ring_radius : {0.4, 1.0}) {
+    LoopPath ring;
+    ring.radius = ring_radius;
+    ring.centre = Vec3(0, 0, start);
+    const WirePieces wire = pieces_of(lay_loop(ring, 0.1));
+    auto depth = [&](double d) {
+      WirePieces lowered = wire;
+      for (Vec3 &x : lowered.nodes) x.z() -= d;
+      const ElementOverlap o = deepest_overlap_with_grains(lowered, wire_radius, grains, {});
+      return o.a >= 0 ? o.depth : -1.0;
+    };
+    const Drop drop = first_touch_drop(depth, 5.0, wire_radius, 1e-9);
+    if (ring_radius < 0.5) {
+      EXPECT_TRUE(drop.touched);
+      EXPECT_NEAR(drop.distance, start - top - wire_radius, 1e-8);
+    } else {
+      EXPECT_FALSE(drop.touched);
+    }
+  }
 }
