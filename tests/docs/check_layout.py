@@ -11,8 +11,8 @@
 # Contributing author: the NSCD package developers
 # ----------------------------------------------------------------------
 
-"""Every command page of doc/ (the pages of the first table of contents in doc/index.md,
-"Commands") has the sections of a LAMMPS reference page: Syntax, Examples, Description,
+"""Every command page of doc/ (the pages of the table of contents captioned "Commands" in
+doc/index.md) has the sections of a LAMMPS reference page: Syntax, Examples, Description,
 Restart, Restrictions, Related commands, Default (as '## ' headings), in that order (other
 sections may stand between them). Prints what is missing or out of order and exits 1 if
 anything is.
@@ -28,11 +28,11 @@ SECTIONS = ["Syntax", "Examples", "Description", "Restart", "Restrictions", "Rel
 
 def command_pages(doc):
     index = (doc / "index.md").read_text()
-    first = re.search(r"```\{toctree\}\n(.*?)```", index, re.S)
-    if not first:
-        sys.exit(f"{doc / 'index.md'}: no toctree")
-    return [line.strip() for line in first.group(1).splitlines()
-            if line.strip() and not line.strip().startswith(":")]
+    for block in re.findall(r"```\{toctree\}\n(.*?)```", index, re.S):
+        lines = [line.strip() for line in block.splitlines() if line.strip()]
+        if ":caption: Commands" in lines:
+            return [line for line in lines if not line.startswith(":")]
+    sys.exit(f"{doc / 'index.md'}: no toctree captioned 'Commands'")
 
 
 def headings(page):
