@@ -133,8 +133,8 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   // (doc/nscd_solver.md, "Acceleration"); tolerance 1e-4 converged at every step of every
   // benchmark scene at its usual timestep within 220 sweeps (doc/BENCHMARKS.md), so
   // max_sweeps 1000 stops only steps that are going wrong, while 1e-6 left most loaded steps
-  // unconverged at several times the cost for no smaller overlap (doc/fix_nscd.md, "Speed
-  // against error").
+  // unconverged at several times the cost for no smaller overlap (doc/BENCHMARKS.md,
+  // "Tolerance against error").
   solver->options.tolerance = 1e-4;
   solver->options.max_sweeps = 1000;
   solver->options.theta = 1.0;

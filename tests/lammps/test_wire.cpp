@@ -1833,7 +1833,7 @@ TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
   const double pairs = summed((double) (std::unique(sources.begin(), sources.end()) - sources.begin()));
   const double messages = 2.0 * pairs;
   if (ranks() == 2) {
-    EXPECT_EQ(messages, 4.0);    // as LAMMPS' comm sent them before (doc/fix_wire.md, "Speed")
+    EXPECT_EQ(messages, 4.0);    // as LAMMPS' comm sent them before (doc/wire_speed.md, "Speed")
   }
   if (rank() == 0)
     std::printf("[ INFO     ] %d ranks: %g ghost nodes, %g substeps: %g messages, %g bytes in the substeps\n",
