@@ -69,7 +69,7 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
   }
   if ((reference_size > 0.0) != (weibull > 0.0))
     error->all(FLERR, "{}: the size effect needs both 'size D0' and 'weibull M'; "
-               "give both, or neither (doc/compute_nscd_crush_atom.md, Errors)", where);
+               "give both or neither (doc/compute_nscd_crush_atom.md, Errors)", where);
 }
 
 void ComputeNSCDCrushAtom::compute_peratom()

@@ -597,7 +597,7 @@ void CreateWire::check_overlaps()
       const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
       if (-p.gap > allowed)
         error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} (allowed: "
-                   "{:.4g}); see doc/create_wire.md, Errors", r.shape_name, k + 1, fix->id, -p.gap, allowed);
+                   "{:.4g}); doc/create_wire.md, Errors", r.shape_name, k + 1, fix->id, -p.gap, allowed);
     }
   }
 }

@@ -554,7 +554,7 @@ void FixWire::warn_about_strained_elements()
   MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
   MPI_Bcast(found.data(), 4, MPI_DOUBLE, (int) deepest[1], world);
   if (comm->me == 0)
-    error->warning(FLERR, "fix wire {}: {} elements start over {:.0f} % from their rest length, worst {:.3g} x "
+    error->warning(FLERR, "fix wire {}: {} elements start over {:.0f} % from rest length, worst {:.3g} x "
                    "(IDs {}-{}); doc/fix_wire.md, Errors", id, total, 100.0 * STRAIN_WARNING,
                    found[2] / found[3], (tagint) found[0], (tagint) found[1]);
 }

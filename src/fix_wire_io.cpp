@@ -247,7 +247,7 @@ void FixWire::unpack_restart(int nlocal, int nth)
     if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) ||
         (mine && count != gear_only && count < least_with_memories))
       error->one(FLERR, "fix wire {}: restart per-atom values of atom ID {} are damaged (a count of {} "
-                 "where {} fit); see doc/fix_wire.md, Errors", id, atom->tag[nlocal], count,
+                 "where {} fit); doc/fix_wire.md, Errors", id, atom->tag[nlocal], count,
                  mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m)
                       : fmt::format("{}", width - m));
     if (!mine) m += (int) count;
