@@ -12,10 +12,15 @@
 # ----------------------------------------------------------------------
 
 """Every command page of doc/ (the pages of the table of contents captioned "Commands" in
-doc/index.md) has the sections of a LAMMPS reference page: Syntax, Examples, Description,
-Restart, Restrictions, Related commands, Default (as '## ' headings), in that order (other
-sections may stand between them). Prints what is missing or out of order and exits 1 if
-anything is.
+doc/index.md) is reStructuredText, doc/<page>.rst, in ASCII only, with an `.. index::` line, a
+title "... command" underlined with '=', and the sections of a LAMMPS reference page,
+underlined with '"': Syntax, Examples, Description, the restart section, Restrictions, Related
+commands, Default, in that order (other sections may stand between them), as LAMMPS' own
+manual has them (doc/src/Modify_requirements.rst of the LAMMPS tree). The restart section is
+the one LAMMPS gives the style's kind: "Restart, fix_modify, output, run start/stop, minimize
+info" (fixes), "Output info" (computes), "Mixing, shift, table, tail correction, restart,
+rRESPA info" (pair styles) or "Restart info" (the others). The other .rst pages of doc/ (the
+package page) are ASCII too. Prints what is wrong and exits 1 if anything is.
 
     check_layout.py DOC_DIR
 """
@@ -24,6 +29,12 @@ import re
 import sys
 
 SECTIONS = ["Syntax", "Examples", "Description", "Restart", "Restrictions", "Related commands", "Default"]
+RESTART_SECTIONS = {
+    "Restart, fix_modify, output, run start/stop, minimize info",
+    "Output info",
+    "Mixing, shift, table, tail correction, restart, rRESPA info",
+    "Restart info",
+}
 
 
 def command_pages(doc):
@@ -35,26 +46,41 @@ def command_pages(doc):
     sys.exit(f"{doc / 'index.md'}: no toctree captioned 'Commands'")
 
 
-def headings(page):
-    """The '## ' headings of a page, outside code blocks."""
-    found, fence = [], False
-    for line in page.read_text().splitlines():
-        if line.startswith("```"):
-            fence = not fence
-        elif not fence and line.startswith("## "):
-            found.append(line[3:].strip())
+def sections(text):
+    """(title, underline character) of every section heading of an rst text, in order."""
+    lines = text.splitlines()
+    found = []
+    for k in range(len(lines) - 1):
+        title, under = lines[k].rstrip(), lines[k + 1].rstrip()
+        if (title and not title.startswith(" ") and len(under) >= len(title) and len(set(under)) == 1
+                and under[0] in "=\"^-~*#+'" and (k == 0 or not lines[k - 1].strip())):
+            found.append((title, under[0]))
     return found
 
 
+def non_ascii(page):
+    """A problem per line of the page that holds a byte outside ASCII."""
+    return [f"line {number}: not ASCII: {line.decode('utf-8', 'replace').strip()[:70]}"
+            for number, line in enumerate(page.read_bytes().splitlines(), 1) if any(b > 127 for b in line)]
+
+
 def layout_problems(page):
-    found = headings(page)
-    missing = [s for s in SECTIONS if s not in found]
+    problems = non_ascii(page)
+    text = page.read_bytes().decode("utf-8", "replace")
+    if not re.search(r"^\.\. index:: ", text, re.M):
+        problems.append("no '.. index::' line")
+    found = sections(text)
+    if not found or found[0][1] != "=" or not found[0][0].endswith(" command"):
+        problems.append("the title is not '... command' underlined with '='")
+    top = ["Restart" if title in RESTART_SECTIONS else title for title, mark in found if mark == '"']
+    missing = [s for s in SECTIONS if s not in top]
     if missing:
-        return "no section " + ", ".join(missing)
-    present = [h for h in found if h in SECTIONS]
-    if present != SECTIONS:
-        return "sections out of order: " + ", ".join(present)
-    return ""
+        problems.append("no section " + ", ".join(missing))
+    else:
+        present = [t for t in top if t in SECTIONS]
+        if present != SECTIONS:
+            problems.append("sections out of order: " + ", ".join(present))
+    return problems
 
 
 def main():
@@ -62,11 +88,20 @@ def main():
     pages = command_pages(doc)
     bad = 0
     for name in pages:
-        problem = layout_problems(doc / f"{name}.md")
-        if problem:
+        page = doc / f"{name}.rst"
+        if not page.is_file():
             bad += 1
-            print(f"doc/{name}.md: {problem}")
+            print(f"doc/{name}.rst: missing (command pages are reStructuredText)")
+            continue
+        for problem in layout_problems(page):
+            print(f"doc/{name}.rst: {problem}")
+        bad += bool(layout_problems(page))
     print(f"{len(pages)} command pages, {bad} not in the layout of a LAMMPS reference page")
+    others = [page for page in sorted(doc.glob("*.rst")) if page.stem not in pages]
+    for page in others:
+        for problem in non_ascii(page):
+            bad += 1
+            print(f"doc/{page.name}: {problem}")
     return 1 if bad else 0
 
 

@@ -372,7 +372,7 @@ TEST_F(CreateWireTest, JoinBendsLikeAnInnerJoint)
 }
 
 // A helix continued from its end by the next layer's riser and helix, as a layered string
-// is laid (doc/create_wire.md): one molecule, one chain, every element at the rest length.
+// is laid (doc/create_wire.rst): one molecule, one chain, every element at the rest length.
 TEST_F(CreateWireTest, HelixRiserHelixIsOneChain)
 {
   box();
