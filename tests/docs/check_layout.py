@@ -11,16 +11,25 @@
 # Contributing author: the NSCD package developers
 # ----------------------------------------------------------------------
 
-"""Every command page of doc/ (the pages of the table of contents captioned "Commands" in
-doc/index.md) is reStructuredText, doc/<page>.rst, in ASCII only, with an `.. index::` line, a
-title "... command" underlined with '=', and the sections of a LAMMPS reference page,
-underlined with '"': Syntax, Examples, Description, the restart section, Restrictions, Related
-commands, Default, in that order (other sections may stand between them), as LAMMPS' own
-manual has them (doc/src/Modify_requirements.rst of the LAMMPS tree). The restart section is
-the one LAMMPS gives the style's kind: "Restart, fix_modify, output, run start/stop, minimize
-info" (fixes), "Output info" (computes), "Mixing, shift, table, tail correction, restart,
-rRESPA info" (pair styles) or "Restart info" (the others). The other .rst pages of doc/ (the
-package page) are ASCII too. Prints what is wrong and exits 1 if anything is.
+"""The documentation's layout, as LAMMPS' own manual has it (doc/src/Modify_requirements.rst of
+the LAMMPS tree):
+
+1. every command page of doc/ (the pages of the table of contents captioned "Commands" in
+   doc/index.md) is reStructuredText, doc/<page>.rst, in ASCII only, with an `.. index::` line, a
+   title "... command" underlined with '=', and the sections of a LAMMPS reference page,
+   underlined with '"': Syntax, Examples, Description, the restart section, Restrictions,
+   Related commands, Default, in that order (other sections may stand between them). The
+   restart section is the one LAMMPS gives the style's kind: "Restart, fix_modify, output, run
+   start/stop, minimize info" (fixes), "Output info" (computes), "Mixing, shift, table, tail
+   correction, restart, rRESPA info" (pair styles) or "Restart info" (the others); the other
+   .rst pages of doc/ (the package page) are ASCII too;
+2. every pointer to a page of doc/ ("doc/fix_wire.rst", "../../doc/fix_nscd_plate.rst#failure")
+   in src/ lib/ tests/ tools/ examples/ benchmarks/ README.md and doc/ names a page that exists,
+   so a message or comment cannot point to a page that was renamed or removed. The logs of the
+   examples (examples/*/log.*) are left out: they are the record of a run, deck echo included,
+   as LAMMPS' own example logs are.
+
+Prints what is wrong and exits 1 if anything is.
 
     check_layout.py DOC_DIR
 """
@@ -35,6 +44,10 @@ RESTART_SECTIONS = {
     "Mixing, shift, table, tail correction, restart, rRESPA info",
     "Restart info",
 }
+POINTER_DIRS = ["src", "lib", "tests", "tools", "examples", "benchmarks", "doc"]
+POINTER_FILES = ["README.md"]
+POINTER = re.compile(r"\bdoc/([A-Za-z0-9_]+\.(?:md|rst))\b")
+TEXT_SUFFIXES = {".cpp", ".h", ".py", ".sh", ".md", ".rst", ".txt", ".cmake", ""}
 
 
 def command_pages(doc):
@@ -83,6 +96,28 @@ def layout_problems(page):
     return problems
 
 
+def dangling_pointers(repo):
+    """file:line: doc/<page> for every pointer to a page of doc/ that does not exist."""
+    doc = repo / "doc"
+    files = [repo / name for name in POINTER_FILES]
+    for folder in POINTER_DIRS:
+        files += [p for p in sorted((repo / folder).rglob("*")) if p.is_file()]
+    problems = []
+    for path in files:
+        rel = path.relative_to(repo)
+        if path.suffix not in TEXT_SUFFIXES or (rel.parts[0] == "examples" and path.name.startswith("log.")):
+            continue
+        try:
+            text = path.read_text()
+        except (UnicodeDecodeError, OSError):
+            continue
+        for number, line in enumerate(text.splitlines(), 1):
+            for page in POINTER.findall(line):
+                if not (doc / page).is_file():
+                    problems.append(f"{rel}:{number}: points to doc/{page}, which does not exist")
+    return problems
+
+
 def main():
     doc = pathlib.Path(sys.argv[1])
     pages = command_pages(doc)
@@ -102,7 +137,11 @@ def main():
         for problem in non_ascii(page):
             bad += 1
             print(f"doc/{page.name}: {problem}")
-    return 1 if bad else 0
+    dangling = dangling_pointers(doc.resolve().parent)
+    for problem in dangling:
+        print(problem)
+    print(f"{len(dangling)} pointers to pages of doc/ that do not exist")
+    return 1 if bad or dangling else 0
 
 
 if __name__ == "__main__":
