@@ -10,16 +10,23 @@
 # Contributing author: the NSCD package developers
 # ----------------------------------------------------------------------
 
-# Sphinx configuration of the package's documentation (doc/*.md, Markdown through MyST).
+# Sphinx configuration of the package's documentation: the command and style reference pages
+# in reStructuredText as LAMMPS' own manual writes them (doc/*.rst, ASCII only), the model,
+# build and measurement pages in Markdown through MyST (doc/*.md).
 # Built by the CTest test docs.sphinx with warnings as errors:
 #   /usr/bin/python3 -m sphinx -W --keep-going -b html doc build/doc-html
 # (Debian: python3-sphinx, python3-myst-parser; tools/build.sh installs them.)
 
+import re
+
+from pygments.lexer import RegexLexer
+from pygments.token import Comment, Keyword, Name, Number, String, Text, Whitespace
+
 project = "NSCD and elastic wires for LAMMPS"
 author = "the NSCD package authors"
 
-extensions = ["myst_parser"]
-source_suffix = {".md": "markdown"}
+extensions = ["myst_parser", "sphinx.ext.extlinks"]
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
 exclude_patterns = ["_build"]
 
@@ -30,3 +37,31 @@ myst_enable_extensions = ["dollarmath"]
 
 html_theme = "alabaster"
 html_title = project
+
+# :lammps:`fix <fix>` links a command of LAMMPS' own manual, as :doc:`fix <fix>` does inside it.
+extlinks = {"lammps": ("https://docs.lammps.org/%s.html", "%s")}
+
+
+class LammpsInputLexer(RegexLexer):
+    """Input lines of LAMMPS for `.. code-block:: LAMMPS` (the name LAMMPS' manual uses):
+    the command, comments, variables, strings and numbers; anything else is plain text, so
+    no line fails to lex."""
+
+    name = "LAMMPS"
+    aliases = ["LAMMPS", "lammps"]
+    flags = re.MULTILINE
+    tokens = {
+        "root": [
+            (r"^[ \t]*[a-z_][a-z_/]*", Keyword),
+            (r"[ \t]+|\n", Whitespace),
+            (r"#.*$", Comment),
+            (r"\$\{[^}\n]*\}|\$\([^)\n]*\)|\$[A-Za-z]|\b[vcf]_\w+(\[[^\]\n]*\])?", Name.Variable),
+            (r'"[^"\n]*"|\'[^\'\n]*\'', String),
+            (r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\b", Number),
+            (r"[^\s#\"'$]+|.", Text),
+        ]
+    }
+
+
+def setup(app):
+    app.add_lexer("LAMMPS", LammpsInputLexer)

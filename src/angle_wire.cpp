@@ -105,7 +105,7 @@ void AngleWire::coeff(int narg, char **arg)
   const double theta0 = narg == 3 ? NSCD_NS::number(lmp, "angle_coeff wire", "theta0", arg[2]) : 180.0;
   if (!(theta0 > 0.0 && theta0 <= 180.0))
     error->all(FLERR, "angle_coeff wire: theta0 = {} must be in (0, 180] degrees (180: straight); "
-               "see doc/angle_style_wire.md, Errors", theta0);
+               "see doc/angle_style_wire.rst, Errors", theta0);
   for (int i = ilo; i <= ihi; i++) {
     stiffness[i] = k;
     rest[i] = (180.0 - theta0) * MathConst::MY_PI / 180.0;

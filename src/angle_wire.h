@@ -16,7 +16,7 @@
    nu = pi - theta (theta = LAMMPS' angle, so nu = 0 for a straight wire) and nu0 = pi - theta0
    the turn at rest (0 unless angle_coeff gives theta0), energy k_rot (nu - nu0)^2 / 2
    (lib/wire/elastic_forces.h). k_rot = EI / l for element length l.
-   fix wire calls the same kernel through joint() in its subcycle. See doc/angle_style_wire.md. */
+   fix wire calls the same kernel through joint() in its subcycle. See doc/angle_style_wire.rst. */
 
 #ifdef ANGLE_CLASS
 // clang-format off

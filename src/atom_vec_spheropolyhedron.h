@@ -20,7 +20,7 @@
    velocity (world frame), torque, mass, principal moments of inertia (body frame) and the
    bounding radius used for neighbour lists and ghost cutoffs. The shape library lives in
    this object; it is stored in restart files as this style's arguments, so a restart is
-   self-contained. See doc/atom_style_spheropolyhedron.md.
+   self-contained. See doc/atom_style_spheropolyhedron.rst.
 
    Only LAMMPS headers here: style_atom.h pulls this file into LAMMPS' core, which should
    not compile Eigen and lib/ (the library sits behind a pointer). */

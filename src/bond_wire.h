@@ -15,7 +15,7 @@
 /* bond_style wire: the tensile spring of one wire element, f = k_elo * strain
    (lib/wire/elastic_forces.h). k_elo is a force (EA of the continuum wire); the rest length
    r0 is given per bond type. With `string yes` the element carries no compression.
-   fix wire calls the same kernel through law() inside its subcycle. See doc/bond_style_wire.md. */
+   fix wire calls the same kernel through law() inside its subcycle. See doc/bond_style_wire.rst. */
 
 #ifdef BOND_CLASS
 // clang-format off

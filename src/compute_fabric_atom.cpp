@@ -37,7 +37,7 @@ ComputeFabricAtom::ComputeFabricAtom(LAMMPS *lmp, int narg, char **arg) :
 {
   with_boundaries = false;    // the papers' fabric: grain-grain contacts
   with_wire = false;          // never wire-grain contacts: the keyword 'wire' is refused below
-  const char *usage = "see doc/compute_fabric_atom.md, Syntax";
+  const char *usage = "see doc/compute_fabric_atom.rst, Syntax";
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg)

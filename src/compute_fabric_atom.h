@@ -14,7 +14,7 @@
 
 /* compute fabric/atom: per grain, the fabric tensor F_i = (1/N_i) sum n (x) n over its
    contacting pairs (one normal per pair) and the number N_i of such pairs, from fix nscd's
-   last solve. See doc/compute_fabric_atom.md. */
+   last solve. See doc/compute_fabric_atom.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

@@ -14,7 +14,7 @@
 
 /* compute nscd/column: measures of a granular column around a vertical axis: its height
    from the true grain surfaces and the fraction of grains it retains. See
-   doc/compute_nscd_column.md. */
+   doc/compute_nscd_column.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

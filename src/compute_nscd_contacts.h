@@ -14,7 +14,7 @@
 
 /* compute nscd/contacts: one row per contact point of fix nscd's last solve, or per
    contacting pair of bodies (keyword pairs), for `dump local` and analysis (force networks,
-   fabric). See doc/compute_nscd_contacts.md. */
+   fabric). See doc/compute_nscd_contacts.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

@@ -13,7 +13,7 @@
 ------------------------------------------------------------------------- */
 
 /* compute nscd/crush/atom: the largest contact force on each grain against a grain-crushing
-   strength (doc/compute_nscd_crush_atom.md). */
+   strength (doc/compute_nscd_crush_atom.rst). */
 
 #include "compute_nscd_crush_atom.h"
 
@@ -50,7 +50,7 @@ ComputeNSCDCrushAtom::ComputeNSCDCrushAtom(LAMMPS *lmp, int narg, char **arg) :
 void ComputeNSCDCrushAtom::parse(int narg, char **arg)
 {
   const std::string where = "compute nscd/crush/atom";
-  const char *usage = "see doc/compute_nscd_crush_atom.md, Syntax";
+  const char *usage = "see doc/compute_nscd_crush_atom.rst, Syntax";
   if (narg < 4) error->all(FLERR, "{}: the strength S0 is missing; {}", where, usage);
   strength = NSCD_NS::number(lmp, where, "strength", arg[3]);
   if (!(strength > 0.0)) error->all(FLERR, "{}: strength {} must be > 0 (a stress, force/area); {}", where, arg[3], usage);
@@ -69,7 +69,7 @@ void ComputeNSCDCrushAtom::parse(int narg, char **arg)
   }
   if ((reference_size > 0.0) != (weibull > 0.0))
     error->all(FLERR, "{}: the size effect needs both 'size D0' and 'weibull M'; "
-               "give both, or neither (doc/compute_nscd_crush_atom.md, Errors)", where);
+               "give both or neither (doc/compute_nscd_crush_atom.rst, Errors)", where);
 }
 
 void ComputeNSCDCrushAtom::compute_peratom()

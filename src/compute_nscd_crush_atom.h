@@ -14,7 +14,7 @@
 
 /* compute nscd/crush/atom: per grain, how close its contact forces bring it to crushing: the
    largest contact force F on it, its volume-equivalent diameter d, the characteristic tensile
-   stress F / d^2 and that over a size-dependent strength. See doc/compute_nscd_crush_atom.md. */
+   stress F / d^2 and that over a size-dependent strength. See doc/compute_nscd_crush_atom.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

@@ -115,7 +115,7 @@ void ComputeNSCDGrainSums::finish_sums()
   if (all == 0 || comm->me != 0 || last_warning_step == update->ntimestep) return;
   last_warning_step = update->ntimestep;
   error->warning(FLERR, "compute {} {}: {} contacts left out at step {}: their grains left this "
-                 "rank (doc/compute_fabric_atom.md, Errors)", style, id, all, update->ntimestep);
+                 "rank (doc/compute_fabric_atom.rst, Errors)", style, id, all, update->ntimestep);
 }
 
 int ComputeNSCDGrainSums::pack_reverse_comm(int n, int first, double *buf)

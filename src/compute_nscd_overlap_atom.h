@@ -15,7 +15,7 @@
 /* compute nscd/overlap/atom: per grain, its deepest overlap with another grain and that
    grain's atom ID, from pair nscd's last contact detection. Finds grains placed inside each
    other (e.g. by create_atoms on a lattice), so that a deck can delete them.
-   See doc/compute_nscd_overlap_atom.md. */
+   See doc/compute_nscd_overlap_atom.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

@@ -38,7 +38,7 @@ enum Column { XX, YY, ZZ, XY, XZ, YZ, NCOLUMNS };
 ComputeNSCDStressAtom::ComputeNSCDStressAtom(LAMMPS *lmp, int narg, char **arg) :
     ComputeNSCDGrainSums(lmp, narg, arg, NCOLUMNS, "nscd/stress/atom"), per_volume(true)
 {
-  const char *usage = "see doc/compute_nscd_stress_atom.md, Syntax";
+  const char *usage = "see doc/compute_nscd_stress_atom.rst, Syntax";
   for (int iarg = 3; iarg < narg; iarg += 2) {
     const std::string key = arg[iarg];
     if (iarg + 1 >= narg)

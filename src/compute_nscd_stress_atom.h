@@ -15,7 +15,7 @@
 /* compute nscd/stress/atom: per grain, the Love-Weber stress of its contact forces,
    sigma_i = (1/V_i) sum_c sym(f_c (x) (x_c - x_i)), from fix nscd's last solve (grains,
    walls, plate) and fix wire's last step (wire-grain contacts). See
-   doc/compute_nscd_stress_atom.md. */
+   doc/compute_nscd_stress_atom.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

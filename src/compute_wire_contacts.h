@@ -14,7 +14,7 @@
 
 /* compute wire/contacts: one row per contact point of the wire (wire-grain, wire-wire,
    wire-wall/plate) in fix wire's last step, forces averaged over its substeps, for
-   `dump local` and tools/nscd-analysis wire-contacts. See doc/compute_wire_contacts.md. */
+   `dump local` and tools/nscd-analysis wire-contacts. See doc/compute_wire_contacts.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

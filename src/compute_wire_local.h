@@ -14,7 +14,7 @@
 
 /* compute wire/local: one row per wire element (bond of bond_style wire) with the IDs of its
    two nodes, strain, tension and elastic energy, evaluated by the bond style's kernel at
-   the current positions. For `dump local`. See doc/compute_wire_local.md. */
+   the current positions. For `dump local`. See doc/compute_wire_local.rst. */
 
 #ifdef COMPUTE_CLASS
 // clang-format off

@@ -12,7 +12,7 @@
    Contributing author: the NSCD package developers
 ------------------------------------------------------------------------- */
 
-/* The create_grains command (doc/create_grains.md). The shapes, the random draws and the
+/* The create_grains command (doc/create_grains.rst). The shapes, the random draws and the
    contact geometry are lib/'s; this file parses the deck, decides the placements from data
    every rank holds and creates each grain on the rank that owns its position. */
 
@@ -126,7 +126,7 @@ void CreateGrains::command(int narg, char **arg)
 void CreateGrains::parse(int narg, char **arg)
 {
   Request &r = *request;
-  const char *usage = "see doc/create_grains.md, Syntax";
+  const char *usage = "see doc/create_grains.rst, Syntax";
   if (narg < 2) error->all(FLERR, "Illegal create_grains command: {}", usage);
   r.type = (int) NSCD_NS::whole(lmp, "create_grains", "TYPE", arg[0], 1, INT_MAX);
   if (r.type > atom->ntypes)

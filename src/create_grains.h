@@ -16,7 +16,7 @@
    staggered lattices or at random positions, without overlap with each other or with the
    grains already there. Every placement is decided from global data, so the same atoms
    (IDs, positions, shapes, orientations) come out on any number of ranks. See
-   doc/create_grains.md. */
+   doc/create_grains.rst. */
 
 #ifdef COMMAND_CLASS
 // clang-format off

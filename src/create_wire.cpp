@@ -181,7 +181,7 @@ void CreateWire::command(int narg, char **arg)
 void CreateWire::parse(int narg, char **arg)
 {
   Request &r = *request;
-  const char *usage = "see doc/create_wire.md, Syntax";
+  const char *usage = "see doc/create_wire.rst, Syntax";
   if (narg < 3) error->all(FLERR, "Illegal create_wire command: {}", usage);
   r.node_type = (int) NSCD_NS::whole(lmp, "create_wire", "atom type", arg[0], INT_MIN, INT_MAX);
   if (r.node_type < 1 || r.node_type > atom->ntypes)
@@ -315,7 +315,7 @@ void CreateWire::parse(int narg, char **arg)
       iarg += 2;
     } else {
       error->all(FLERR, "create_wire: unknown keyword '{}'; the "
-                 "keywords are listed in doc/create_wire.md, Syntax", key);
+                 "keywords are listed in doc/create_wire.rst, Syntax", key);
     }
   }
   if (r.continues()) {
@@ -324,7 +324,7 @@ void CreateWire::parse(int narg, char **arg)
                  "end); remove one");
     if (r.nodes > 0)
       error->all(FLERR, "create_wire: 'nodes' cannot be combined with "
-                 "'from'; drop 'nodes' (doc/create_wire.md, Errors)");
+                 "'from'; drop 'nodes' (doc/create_wire.rst, Errors)");
     return;    // the types, molecule and mass default to the wire's (find_end)
   }
   if (r.bond_type == 0) error->all(FLERR, "create_wire: give the bond type of the elements ('bond BTYPE')");
@@ -432,7 +432,7 @@ void CreateWire::find_end()
   auto agree = [&](const char *name, long long given, long long wire, const char *keyword) {
     if (given != wire)
       error->all(FLERR, "create_wire {}: {} {} differs from the wire's {} at node ID {}; give {} or drop "
-                 "'{}' (doc/create_wire.md, Errors)", what, name, given, wire, end.tag, wire, keyword);
+                 "'{}' (doc/create_wire.rst, Errors)", what, name, given, wire, end.tag, wire, keyword);
   };
   agree("atom type", r.node_type, end.type, "TYPE");
   if (r.bond_type) agree("bond type", r.bond_type, end.bond_type, "bond");
@@ -526,7 +526,7 @@ void CreateWire::lay_out()
   const double strain = r.layout.chord / r.rest_length - 1.0;
   if (std::abs(strain) > LENGTH_TOLERANCE && !r.strained)
     error->all(FLERR, "create_wire {}: elements {:.10g} long, rest length {:.10g} (strain {:.3g}); "
-               "see doc/create_wire.md, Errors", r.shape_name, r.layout.chord, r.rest_length, strain);
+               "see doc/create_wire.rst, Errors", r.shape_name, r.layout.chord, r.rest_length, strain);
   for (nscd::wire::WireElement &e : r.layout.topology.elements) e.rest_length = r.rest_length;
 }
 
@@ -604,7 +604,7 @@ void CreateWire::check_overlaps()
   MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
   if (deepest[0] > allowed)
     error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}); see "
-               "doc/create_wire.md, Errors", r.shape_name, (tagint) deepest[1], deepest[0], allowed);
+               "doc/create_wire.rst, Errors", r.shape_name, (tagint) deepest[1], deepest[0], allowed);
 
   for (Fix *fix : modify->get_fix_list()) {
     auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
@@ -613,7 +613,7 @@ void CreateWire::check_overlaps()
       const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
       if (-p.gap > allowed)
         error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} (allowed: "
-                   "{:.4g}); see doc/create_wire.md, Errors", r.shape_name, k + 1, fix->id, -p.gap, allowed);
+                   "{:.4g}); doc/create_wire.rst, Errors", r.shape_name, k + 1, fix->id, -p.gap, allowed);
     }
   }
 }
@@ -652,7 +652,7 @@ void CreateWire::check_wire_overlaps()
   const wire::ElementOverlap self = wire::deepest_overlap_within(joined, r.radius, shifts);
   if (self.depth > allowed) {
     const auto &ea = joined.elements[self.a], &eb = joined.elements[self.b];
-    // the cause where it is known (doc/create_wire.md, Errors, has the rest)
+    // the cause where it is known (doc/create_wire.rst, Errors, has the rest)
     std::string why = fmt::format(" (allowed {:.4g}); lay it elsewhere or raise 'overlap'", allowed);
     if (self.shift.squaredNorm() > 0.0)
       why = ": it reaches its periodic image; shrink it or enlarge the box";
@@ -667,7 +667,7 @@ void CreateWire::check_wire_overlaps()
   const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing.pieces, r.radius, shifts);
   if (other.depth > allowed)
     error->all(FLERR, "create_wire {}: overlaps the wire element between atoms ID {} and {} by {:.4g}; see "
-               "doc/create_wire.md, Errors", r.shape_name, existing.bonds[other.b][0], existing.bonds[other.b][1], other.depth);
+               "doc/create_wire.rst, Errors", r.shape_name, existing.bonds[other.b][0], existing.bonds[other.b][1], other.depth);
 }
 
 /* The wires already there, but for the elements in `skip`: their nodes and bonds from every

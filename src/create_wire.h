@@ -15,7 +15,7 @@
 /* create_wire: lays a wire (nodes, bond_style wire elements, angle_style wire joints) along
    a loop, helix, line or polyline, on any number of ranks, as a new wire or continuing one
    from its free end ('from ID|last'). The path geometry is
-   lib/wire/wire_path.h. See doc/create_wire.md. */
+   lib/wire/wire_path.h. See doc/create_wire.rst. */
 
 #ifdef COMMAND_CLASS
 // clang-format off

@@ -14,7 +14,7 @@
 
 /* dump grains/vtk: one legacy-VTK polydata file per snapshot with the true shape of every
    grain (polyhedral cores as polygons; spheres and spherocylinders as tessellated
-   surfaces), for ParaView/VisIt. See doc/dump_grains_vtk.md. */
+   surfaces), for ParaView/VisIt. See doc/dump_grains_vtk.rst. */
 
 #ifdef DUMP_CLASS
 // clang-format off

@@ -126,15 +126,15 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   virial_global_flag = virial_peratom_flag = 1;
   thermo_virial = 1;
 
-  // Defaults (doc/fix_nscd.md): theta = 1 lets no impact sink into an obstacle (with
+  // Defaults (doc/fix_nscd.rst): theta = 1 lets no impact sink into an obstacle (with
   // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
   // is checked every 4 sweeps (it costs about a sweep); Nesterov momentum needs fewer
   // sweeps than plain Gauss-Seidel on every measured scene, at no communication cost
   // (doc/nscd_solver.md, "Acceleration"); tolerance 1e-4 converged at every step of every
   // benchmark scene at its usual timestep within 220 sweeps (doc/BENCHMARKS.md), so
   // max_sweeps 1000 stops only steps that are going wrong, while 1e-6 left most loaded steps
-  // unconverged at several times the cost for no smaller overlap (doc/fix_nscd.md, "Speed
-  // against error").
+  // unconverged at several times the cost for no smaller overlap (doc/BENCHMARKS.md,
+  // "Tolerance against error").
   solver->options.tolerance = 1e-4;
   solver->options.max_sweeps = 1000;
   solver->options.theta = 1.0;
@@ -152,7 +152,7 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
       ++iarg;
     } else if (!set_option(key, value)) {
       error->all(FLERR, "fix nscd: unknown keyword '{}'; the "
-                 "keywords are listed in doc/fix_nscd.md, Syntax", key);
+                 "keywords are listed in doc/fix_nscd.rst, Syntax", key);
     }
   }
   solver->options.dt = 1.0;    // validated for real in init(), with the run's timestep
@@ -288,7 +288,7 @@ void FixNSCD::check_overlap_speed()
   const double speed = solver->options.overlap_speed;
   if (speed * dt <= ahead) return;
   error->all(FLERR, "fix nscd: overlap_speed {} separates grains by up to {:.4g} per step; "
-             "use at most {:.4g} (doc/fix_nscd.md, Errors)", speed, speed * dt, ahead / dt);
+             "use at most {:.4g} (doc/fix_nscd.rst, Errors)", speed, speed * dt, ahead / dt);
 }
 
 /* A grain also moved by another integrator (fix nve, fix rigid, ...) would move twice per
@@ -354,7 +354,7 @@ void FixNSCD::warn_if_grains_overlap()
     if (all[4 * r] > worst[0]) std::copy(&all[4 * r], &all[4 * r + 4], worst);
   if (worst[0] > 0.0 && comm->me == 0)
     error->warning(FLERR, "fix nscd: grains ID {} and {} overlap by {:.3g} ({:.3g} of the smaller one's bounding "
-                   "radius); doc/fix_nscd.md, Errors",
+                   "radius); doc/fix_nscd.rst, Errors",
                    (tagint) worst[1], (tagint) worst[2], worst[3], worst[0]);
 }
 
@@ -876,7 +876,7 @@ void FixNSCD::stop_on_non_finite_problem()
       if (global_bodies[k] == index) culprit = fmt::format("fix {}'s body", global_body_fixes[k]->id);
   }
   error->all(FLERR, "fix nscd: step {}: no finite solution (residual {}); the largest impulse, {:.3g}, acts on {} "
-             "(doc/fix_nscd.md, Errors)", update->ntimestep, solver->report.residual, worst[0], culprit);
+             "(doc/fix_nscd.rst, Errors)", update->ntimestep, solver->report.residual, worst[0], culprit);
 }
 
 void FixNSCD::exchange_velocities()
@@ -1205,10 +1205,10 @@ void FixNSCD::write_restart(FILE *fp)
 void FixNSCD::restart(char *bytes)
 {
   NSCD_NS::SolverBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_solver_block, bytes, "doc/fix_nscd.md");
+      lmp, this, NSCD_NS::read_solver_block, bytes, "doc/fix_nscd.rst");
   if (!block.read) {
     NSCD_NS::warn_format_not_read(lmp, this, "warm start", block.format, "the first step starts from zero impulses",
-                                  "doc/fix_nscd.md");
+                                  "doc/fix_nscd.rst");
     return;
   }
   // The impulses' timestep, so that a run at another `timestep` starts from the same forces
@@ -1272,7 +1272,7 @@ void FixNSCD::unpack_restart(int nlocal, int nth)
                              std::to_string(size) + " per-atom values for it: the file is damaged");
     records = NSCD_NS::read_atom_impulses(&extra[nlocal][m + 1], (std::size_t) size - 1, atom->tag[nlocal]);
   } catch (NSCD_NS::Damaged &e) {
-    error->one(FLERR, "fix nscd {}: restart file's warm start refused: {} (doc/fix_nscd.md, Errors)", id, e.what());
+    error->one(FLERR, "fix nscd {}: restart file's warm start refused: {} (doc/fix_nscd.rst, Errors)", id, e.what());
   }
   maxexchange = std::max(maxexchange, NSCDAtomImpulses::values_for(records.size()));
   solver->atom_impulses.set(nlocal, std::move(records));

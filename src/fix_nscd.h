@@ -15,7 +15,7 @@
 /* fix nscd: time integration of rigid spheropolyhedra by Non-Smooth Contact Dynamics
    (Moreau-Jean theta-method, nonlinear Gauss-Seidel with the Signorini condition and exact
    Coulomb friction). Contacts come from pair_style nscd and from boundary fixes
-   (fix nscd/wall); the solver is lib/solver. See doc/fix_nscd.md. */
+   (fix nscd/wall); the solver is lib/solver. See doc/fix_nscd.rst. */
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -67,7 +67,7 @@ class FixNSCD : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  // The warm-start impulses travel with their atoms (per-atom arrays, doc/fix_nscd.md).
+  // The warm-start impulses travel with their atoms (per-atom arrays, doc/fix_nscd.rst).
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
   void set_arrays(int) override;

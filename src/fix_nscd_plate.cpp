@@ -313,7 +313,7 @@ void FixNSCDPlate::write_restart(FILE *fp)
 void FixNSCDPlate::restart(char *bytes)
 {
   const NSCD_NS::PlateBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_plate_block, bytes, "doc/fix_nscd_plate.md");
+      lmp, this, NSCD_NS::read_plate_block, bytes, "doc/fix_nscd_plate.rst");
   plate->z = block.z;
   plate->vz = block.vz;
   plate->elapsed = block.elapsed;

@@ -15,7 +15,7 @@
 /* fix nscd/plate: a horizontal loading plate above the grains: a rigid body with its own
    mass that moves only along z (no rotation), pushed down by a load that grows linearly in
    time (or stays constant). Takes part in fix nscd's contact problem. See
-   doc/fix_nscd_plate.md. */
+   doc/fix_nscd_plate.rst. */
 
 #ifdef FIX_CLASS
 // clang-format off

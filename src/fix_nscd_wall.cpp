@@ -85,7 +85,7 @@ FixNSCDWall::FixNSCDWall(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   restart_global = 1;
 
-  const char *usage = "expected plane or cylinder; see doc/fix_nscd_wall.md, Syntax";
+  const char *usage = "expected plane or cylinder; see doc/fix_nscd_wall.rst, Syntax";
   if (narg < 4) error->all(FLERR, "Illegal fix nscd/wall command: {}", usage);
   int iarg;
   if (strcmp(arg[3], "plane") == 0) {
@@ -292,7 +292,7 @@ void FixNSCDWall::write_restart(FILE *fp)
 void FixNSCDWall::restart(char *bytes)
 {
   const NSCD_NS::WallBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_wall_block, bytes, "doc/fix_nscd_wall.md");
+      lmp, this, NSCD_NS::read_wall_block, bytes, "doc/fix_nscd_wall.rst");
   if (block.cylinder != (wall->kind == Wall::Kind::cylinder)) {
     if (comm->me == 0)
       error->warning(FLERR, "fix nscd/wall {}: the restart file holds a {} wall of this ID; "

@@ -14,7 +14,7 @@
 
 /* fix nscd/wall: a plane or the inside of a cylinder as a boundary of infinite mass in
    fix nscd's contact problem; may move with a prescribed velocity and be removed (unfix).
-   See doc/fix_nscd_wall.md. */
+   See doc/fix_nscd_wall.rst. */
 
 #ifdef FIX_CLASS
 // clang-format off

@@ -121,7 +121,7 @@ FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) :
                  "give 'radius R' (or k_n 0 for a wire without contacts)", law.k_n);
     if (contacts_per_node < 1.0)
       error->all(FLERR, "fix wire: contacts_per_node {} with contacts (k_n {}); give "
-                 "contacts_per_node >= 1 (doc/fix_wire.md, Errors)", contacts_per_node, law.k_n);
+                 "contacts_per_node >= 1 (doc/fix_wire.rst, Errors)", contacts_per_node, law.k_n);
   }
   // A wire of S times the inertia is the same wire in slow motion by sqrt(S) when its
   // dashpots grow by sqrt(S): damping ratios (a contact's restitution) stay as given.
@@ -168,12 +168,12 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
       {"strength", &strength}, {"strength_spread", &strength_spread}, {"seed", &strength_seed}};
   const bool known = plain.count(key) || key == "substeps" || key == "breaks";
   if (!known)
-    error->all(FLERR, "fix wire: unknown keyword '{}'; the keywords are listed in doc/fix_wire.md, Syntax", key);
-  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (doc/fix_wire.md, Syntax)", key);
+    error->all(FLERR, "fix wire: unknown keyword '{}'; the keywords are listed in doc/fix_wire.rst, Syntax", key);
+  if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (doc/fix_wire.rst, Syntax)", key);
   if (plain.count(value) || strcmp(value, "substeps") == 0 || strcmp(value, "breaks") == 0 ||
       strcmp(value, "grain_friction") == 0)
     error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
-               "(doc/fix_wire.md, Syntax)", key, value);
+               "(doc/fix_wire.rst, Syntax)", key, value);
   if (key == "breaks") {
     breaks_given = true;
     if (comm->me == 0 && !breaks_file) {
@@ -266,7 +266,7 @@ void FixWire::init()
   avec = AtomVecSpheropolyhedron::find(lmp, "fix wire");
   if (inertia_scale > 1.0 && comm->me == 0)
     error->warning(FLERR, "fix wire: inertia {}: the wire moves {:.3g} times slower; for quasi-static "
-                   "phases only (doc/fix_wire.md, Errors)", inertia_scale, std::sqrt(inertia_scale));
+                   "phases only (doc/fix_wire.rst, Errors)", inertia_scale, std::sqrt(inertia_scale));
   check_partners();
   find_boundaries();
   check_contacts_possible();
@@ -393,7 +393,7 @@ void FixWire::plan_substeps()
     wire::check_wire_step(lib->plan.dt_sp, w, kind, safety);
   } catch (std::exception &e) {
     error->all(FLERR, "fix wire: {} (stability limit dt_SP max = {:.6g}); use "
-               "'substeps auto' (doc/fix_wire.md, Errors)", e.what(), stable_dt_sp);
+               "'substeps auto' (doc/fix_wire.rst, Errors)", e.what(), stable_dt_sp);
   }
   if (lib->plan.substeps > WARN_SUBSTEPS_RATIO * needed && comm->me == 0)
     error->warning(FLERR, "fix wire: {} asks for {} wire substeps per step, {:.0f} times the {} the stability limit needs; use "
@@ -513,7 +513,7 @@ void FixWire::warn_about_elements_inside_grains()
   }
   MPI_Bcast(found, 4, MPI_DOUBLE, worst.rank, world);
   if (comm->me == 0)
-    error->warning(FLERR, "fix wire {}: element {}-{} lies inside grain ID {} by {:.4g} ({:.3g} wire radii) at the start (doc/fix_wire.md, "
+    error->warning(FLERR, "fix wire {}: element {}-{} lies inside grain ID {} by {:.4g} ({:.3g} wire radii) at the start (doc/fix_wire.rst, "
                    "Errors)",
                    id, (tagint) found[0], (tagint) found[1], (tagint) found[2], worst.depth, worst.depth / wire_radius);
 }
@@ -554,8 +554,8 @@ void FixWire::warn_about_strained_elements()
   MPI_Allreduce(worst, deepest, 1, MPI_2DOUBLE_PRECISION, MPI_MAXLOC, world);
   MPI_Bcast(found.data(), 4, MPI_DOUBLE, (int) deepest[1], world);
   if (comm->me == 0)
-    error->warning(FLERR, "fix wire {}: {} elements start over {:.0f} % from their rest length, worst {:.3g} x "
-                   "(IDs {}-{}); doc/fix_wire.md, Errors", id, total, 100.0 * STRAIN_WARNING,
+    error->warning(FLERR, "fix wire {}: {} elements start over {:.0f} % from rest length, worst {:.3g} x "
+                   "(IDs {}-{}); doc/fix_wire.rst, Errors", id, total, 100.0 * STRAIN_WARNING,
                    found[2] / found[3], (tagint) found[0], (tagint) found[1]);
 }
 

@@ -19,7 +19,7 @@
    boundaries, calls lib/wire, stores the nodes' new positions and velocities and hands out
    the forces, and does LAMMPS' communication, restart and output. The wire->grain forces and torques averaged over the substeps go to
    the grains' f and torque in post_force, so fix nscd takes them as external forces.
-   See doc/fix_wire.md. Only LAMMPS headers here: lib/ stays behind a pointer. */
+   See doc/fix_wire.rst. Only LAMMPS headers here: lib/ stays behind a pointer. */
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -89,7 +89,7 @@ class FixWire : public Fix {
 
   // compute wire/contacts: recording of contact points from the next step on, and the
   // points of the last step computed on this rank, CONTACT_COLUMNS numbers a row
-  // (doc/compute_wire_contacts.md).
+  // (doc/compute_wire_contacts.rst).
   static constexpr int CONTACT_COLUMNS = 16;
   enum ContactColumn { ROW_NODE_1 = 0, ROW_OTHER = 2, ROW_KIND = 3, ROW_POINT = 4, ROW_NORMAL = 7, ROW_NORMAL_FORCE = 10,
                        ROW_TANGENTIAL_FORCE = 11 };

@@ -16,7 +16,7 @@
    element leaves the bond topology (and the joints at its two nodes the angle topology) on
    every rank, so it is gone from the next step on, from restart and data files, and from
    fix wire's contacts; each break is logged (and written to the breaks file). See
-   doc/fix_wire.md, "Breaking". */
+   doc/fix_wire.rst, "Breaking". */
 
 #include "fix_wire.h"
 

@@ -247,7 +247,7 @@ void FixWire::unpack_restart(int nlocal, int nth)
     if (!(count >= 1.0 && count <= width - m) || count != std::floor(count) ||
         (mine && count != gear_only && count < least_with_memories))
       error->one(FLERR, "fix wire {}: restart per-atom values of atom ID {} are damaged (a count of {} "
-                 "where {} fit); see doc/fix_wire.md, Errors", id, atom->tag[nlocal], count,
+                 "where {} fit); doc/fix_wire.rst, Errors", id, atom->tag[nlocal], count,
                  mine ? fmt::format("{} or {} to {}", gear_only, least_with_memories, width - m)
                       : fmt::format("{}", width - m));
     if (!mine) m += (int) count;
@@ -257,14 +257,14 @@ void FixWire::unpack_restart(int nlocal, int nth)
   for (int c = 0; c < GEAR_COLUMNS; c++)
     if (!std::isfinite(state[c]) || (c == GEAR_COLUMNS - 1 && started != 0.0 && started != 1.0))
       error->one(FLERR, "fix wire {}: the restart file's Gear state of atom ID {} holds {} (value {} of "
-                 "{}); see doc/fix_wire.md, Errors", id, atom->tag[nlocal], state[c], c + 1, GEAR_COLUMNS);
+                 "{}); see doc/fix_wire.rst, Errors", id, atom->tag[nlocal], state[c], c + 1, GEAR_COLUMNS);
   std::copy(state, state + GEAR_COLUMNS, gear[nlocal]);
   if (extra[m] == gear_only) return;    // wire format 3 or older: restart() kept the atom's memories
   try {
     const auto values = (std::size_t) extra[m] - gear_only;
     lib->atom_memories.set(nlocal, NSCD_NS::read_atom_memories(state + GEAR_COLUMNS, values, atom->tag[nlocal]));
   } catch (NSCD_NS::Damaged &e) {
-    error->one(FLERR, "fix wire {}: restart file's friction memories refused: {} (doc/fix_wire.md, Errors)", id,
+    error->one(FLERR, "fix wire {}: restart file's friction memories refused: {} (doc/fix_wire.rst, Errors)", id,
                e.what());
   }
   maxexchange = std::max(maxexchange, GEAR_COLUMNS + lib->atom_memories.values(nlocal));
@@ -383,11 +383,11 @@ void FixWire::write_restart(FILE *fp)
 void FixWire::restart(char *bytes)
 {
   NSCD_NS::WireBlock block = NSCD_NS::read_restart_block(
-      lmp, this, NSCD_NS::read_wire_block, bytes, "doc/fix_wire.md");
+      lmp, this, NSCD_NS::read_wire_block, bytes, "doc/fix_wire.rst");
   state_dt = block.dt;
   if (!block.memories_read) {
     NSCD_NS::warn_format_not_read(lmp, this, "wire contacts", block.format,
-                                  "their friction springs start again from zero", "doc/fix_wire.md");
+                                  "their friction springs start again from zero", "doc/fix_wire.rst");
     return;
   }
   if (!block.memories.empty()) file_with_owned_nodes(block.memories);

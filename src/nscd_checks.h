@@ -87,7 +87,7 @@ inline void refuse_migration_before(LAMMPS *lmp, const Fix *fix, const char *wha
 // read(bytes, size) from nscd_restart_blocks.h on the block LAMMPS hands Fix::restart(), or
 // an error naming the fix and what is wrong with the block if it is damaged; the way out
 // (another fix ID starts without the stored state, or a newer build) is explained under
-// Errors of the fix's page `page` ("doc/fix_nscd.md").
+// Errors of the fix's page `page` ("doc/fix_nscd.rst").
 template <class Read>
 auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *bytes, const char *page)
     -> decltype(read(bytes, UNKNOWN_SIZE))
@@ -102,7 +102,7 @@ auto read_restart_block(LAMMPS *lmp, const Fix *fix, Read read, const char *byte
 
 // Warns (on rank 0) that the block holding `what` is in an older format whose length this
 // build cannot check, so it is not read; `instead` says what the run does without it, `page`
-// the fix's page whose Errors section explains it ("doc/fix_nscd.md").
+// the fix's page whose Errors section explains it ("doc/fix_nscd.rst").
 inline void warn_format_not_read(LAMMPS *lmp, const Fix *fix, const char *what, int format, const char *instead,
                                  const char *page)
 {

@@ -17,7 +17,7 @@
    and direction, holding those copies only. LAMMPS' comm->forward_comm / reverse_comm of a
    fix walk its swaps (6 on a brick, each rank in turn, ghosts of ghosts relayed) over every
    ghost atom, grains too, and send a message per swap that has any ghost atom, wire node or
-   not; fix wire exchanged its nodes that way twice per wire substep (doc/fix_wire.md, "Speed").
+   not; fix wire exchanged its nodes that way twice per wire substep (doc/wire_speed.md, "Speed").
 
    The plan is made after each neighbour build from where each copy comes from (its owner
    rank and the item's index there, which the caller learns with one LAMMPS forward_comm),

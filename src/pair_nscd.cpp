@@ -223,7 +223,7 @@ void PairNSCD::check_periodic_box_holds_grains()
     const double width = volume / std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
     if (width < 2.0 * widest + activation)
       error->all(FLERR, "pair_style nscd: the periodic box is {:.6g} wide in {}, a grain up to "
-                 "{:.6g} across; see doc/pair_nscd.md, Errors", width, names[d], 2.0 * widest);
+                 "{:.6g} across; see doc/pair_nscd.rst, Errors", width, names[d], 2.0 * widest);
   }
 }
 
@@ -405,7 +405,7 @@ void PairNSCD::stop_if_damaged(std::string problem)
   problem.resize(size);
   MPI_Bcast(&problem[0], size, MPI_CHAR, 0, world);
   error->all(FLERR, "pair_style nscd: restart file's settings refused: {}; start from a data file "
-             "(doc/pair_nscd.md, Errors)", problem);
+             "(doc/pair_nscd.rst, Errors)", problem);
 }
 
 /* The contacts of the last compute() (at capacity) and the per type-pair laws, besides what

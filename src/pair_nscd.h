@@ -15,7 +15,7 @@
 /* pair_style nscd: finds the contacts between neighbouring grains (rigid spheropolyhedra)
    and holds the per type-pair contact laws (friction, restitution). It adds no force of its
    own: fix nscd solves the contact impulses (and carries their virial). See
-   doc/pair_nscd.md. */
+   doc/pair_nscd.rst. */
 
 #ifdef PAIR_CLASS
 // clang-format off

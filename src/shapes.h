@@ -13,7 +13,7 @@
 ------------------------------------------------------------------------- */
 
 /* The `shapes` command: loads, generates, writes and assigns the grain shapes of
-   atom_style spheropolyhedron. See doc/shapes.md. */
+   atom_style spheropolyhedron. See doc/shapes.rst. */
 
 #ifdef COMMAND_CLASS
 // clang-format off

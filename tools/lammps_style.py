@@ -26,8 +26,9 @@ LAMMPS tree) checked on the package's src/ (doc/build.md, "LAMMPS' style rules")
    error->warning) longer than MAX_MESSAGE characters: at most two lines as LAMMPS prints
    them (`ERROR: ` + the message + ` (src/NSCD/file.cpp:123)`, 80 columns a line, with room
    for the values the placeholders take). Longer explanations go to the style's page in doc/,
-   under '## Errors'; a message naming a page ("doc/fix_wire.md, Errors") must name one that
-   exists, with that heading;
+   under its section 'Errors'; a message naming a page ("doc/fix_wire.rst, Errors") must name
+   one that exists, with that heading (a section title of the reStructuredText page, or a '## '
+   heading of a Markdown page);
 4. the package's helpers in one namespace, LAMMPS_NS::NSCD_NS (PACKAGE_NAMESPACE), as LAMMPS'
    packages keep theirs (GRANULAR's Granular_NS, RHEO's RHEO_NS): directly in LAMMPS_NS only
    the styles and the classes derived from a LAMMPS class (their bases), forward declarations
@@ -280,18 +281,28 @@ def check_messages(src, show_lengths=False):
     return problems
 
 
-DOC_POINTER = re.compile(r"doc/([\w.-]+\.md)(?:, (\w[\w ]*\w))?")
+DOC_POINTER = re.compile(r"doc/([\w.-]+\.(?:md|rst))(?:, (\w[\w ]*\w))?")
+
+
+def has_heading(page, heading):
+    """Whether the doc page has a section of that title: in reStructuredText the title line
+    followed by its underline (one punctuation character repeated), in Markdown a '## ' line."""
+    lines = page.read_text().splitlines()
+    if page.suffix == ".rst":
+        return any(lines[k] == heading and len(lines[k + 1]) >= len(heading) and len(set(lines[k + 1])) == 1
+                   and not lines[k + 1][0].isalnum() for k in range(len(lines) - 1))
+    return f"## {heading}" in lines
 
 
 def check_doc_pointers(src, doc):
-    """Every doc page a message names exists, with the heading it names ("doc/fix_wire.md,
-    Errors" needs a '## Errors' in doc/fix_wire.md)."""
+    """Every doc page a message names exists, with the heading it names ("doc/fix_wire.rst,
+    Errors" needs a section 'Errors' in doc/fix_wire.rst)."""
     problems = []
     for path in sorted(src.rglob("*")):
         if path.suffix not in (".h", ".cpp"):
             continue
         # the messages (adjacent literals joined), and every other literal naming a page: one
-        # passed to a helper that puts it in a message (read_restart_block's "doc/fix_nscd.md")
+        # passed to a helper that puts it in a message (read_restart_block's "doc/fix_nscd.rst")
         text = strip_comments_and_strings(path.read_text(), keep_strings=True)
         literals = [(line_of(text, m.start()), None, m.group(1)) for m in LITERAL.finditer(text)
                     if DOC_POINTER.search(m.group(1))]
@@ -300,9 +311,9 @@ def check_doc_pointers(src, doc):
                 where = f"{path.relative_to(src.parent)}:{line}"
                 if not (doc / page).is_file():
                     problems.append(f"{where}: the message names doc/{page}, which does not exist")
-                elif heading and f"\n## {heading}\n" not in "\n" + (doc / page).read_text():
+                elif heading and not has_heading(doc / page, heading):
                     problems.append(f"{where}: the message names the section '{heading}' of doc/{page}, "
-                                    f"which has no '## {heading}' heading")
+                                    f"which has no section '{heading}'")
     return problems
 
 

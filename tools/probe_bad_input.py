@@ -331,7 +331,7 @@ CASES = [
      "error", ["maybe"]),
     ("create_wire drop with from", deck(WIRE, add=["create_wire 2 line 3 -2 0.3 3 2 0.3 from last drop yes"]),
      "error", ["drop", "from"]),
-    # --- create_grains (doc/create_grains.md)
+    # --- create_grains (doc/create_grains.rst)
     ("create_grains type 7", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 7 g shape 1 1 density 1 seed 5 lattice 1.5"]), "error", ['7']),
     ("create_grains no such region", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 nowhere shape 1 1 density 1 seed 5 lattice 1.5"]), "error", ['nowhere']),
     ("create_grains seed 0", deck(BASE, add=["region g block -2 2 -2 2 2 4 units box", "create_grains 1 g shape 1 1 density 1 seed 0 lattice 1.5"]), "error", ['seed', '0']),

@@ -422,7 +422,7 @@ void mark_feature_vertices(const Core &core, std::uint32_t feature, std::vector<
 // neighbour's face gets one closest point (the face is not aligned closely enough to be
 // clipped); turning about it brings the edge down onto the face's far border within the
 // step, and the ends of the edge lie beside the face, so no vertex over a face stands for
-// that point. Measured in benchmarks/hard/in.fast_pour (doc/pair_nscd.md): every overlap
+// that point. Measured in benchmarks/hard/in.fast_pour (doc/BENCHMARKS.md): every overlap
 // that grew by more than 0.2 r in a step grew at an edge-edge crossing next to the closest
 // features (an edge through a vertex of one closest feature, an edge of a face through a
 // vertex of the other); these are the ones searched, as all edges over all faces cost 5x

@@ -14,7 +14,7 @@
 
 // Where a wire is laid: its centre line (a loop or helix around an axis, a straight line, a
 // polyline) cut into nodes a given straight distance apart. Used by the `create_wire`
-// command; pure geometry, no LAMMPS. See doc/create_wire.md.
+// command; pure geometry, no LAMMPS. See doc/create_wire.rst.
 //
 // Nodes follow the path at equal chords: node k+1 is the first point after node k along
 // the path at straight distance `chord` from it. The first node is the path's start; an

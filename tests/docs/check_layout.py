@@ -11,11 +11,25 @@
 # Contributing author: the NSCD package developers
 # ----------------------------------------------------------------------
 
-"""Every command page of doc/ (the pages of the first table of contents in doc/index.md,
-"Commands") has the sections of a LAMMPS reference page: Syntax, Examples, Description,
-Restart, Restrictions, Related commands, Default (as '## ' headings), in that order (other
-sections may stand between them). Prints what is missing or out of order and exits 1 if
-anything is.
+"""The documentation's layout, as LAMMPS' own manual has it (doc/src/Modify_requirements.rst of
+the LAMMPS tree):
+
+1. every command page of doc/ (the pages of the table of contents captioned "Commands" in
+   doc/index.md) is reStructuredText, doc/<page>.rst, in ASCII only, with an `.. index::` line, a
+   title "... command" underlined with '=', and the sections of a LAMMPS reference page,
+   underlined with '"': Syntax, Examples, Description, the restart section, Restrictions,
+   Related commands, Default, in that order (other sections may stand between them). The
+   restart section is the one LAMMPS gives the style's kind: "Restart, fix_modify, output, run
+   start/stop, minimize info" (fixes), "Output info" (computes), "Mixing, shift, table, tail
+   correction, restart, rRESPA info" (pair styles) or "Restart info" (the others); the other
+   .rst pages of doc/ (the package page) are ASCII too;
+2. every pointer to a page of doc/ ("doc/fix_wire.rst", "../../doc/fix_nscd_plate.rst#failure")
+   in src/ lib/ tests/ tools/ examples/ benchmarks/ README.md and doc/ names a page that exists,
+   so a message or comment cannot point to a page that was renamed or removed. The logs of the
+   examples (examples/*/log.*) are left out: they are the record of a run, deck echo included,
+   as LAMMPS' own example logs are.
+
+Prints what is wrong and exits 1 if anything is.
 
     check_layout.py DOC_DIR
 """
@@ -24,37 +38,84 @@ import re
 import sys
 
 SECTIONS = ["Syntax", "Examples", "Description", "Restart", "Restrictions", "Related commands", "Default"]
+RESTART_SECTIONS = {
+    "Restart, fix_modify, output, run start/stop, minimize info",
+    "Output info",
+    "Mixing, shift, table, tail correction, restart, rRESPA info",
+    "Restart info",
+}
+POINTER_DIRS = ["src", "lib", "tests", "tools", "examples", "benchmarks", "doc"]
+POINTER_FILES = ["README.md"]
+POINTER = re.compile(r"\bdoc/([A-Za-z0-9_]+\.(?:md|rst))\b")
+TEXT_SUFFIXES = {".cpp", ".h", ".py", ".sh", ".md", ".rst", ".txt", ".cmake", ""}
 
 
 def command_pages(doc):
     index = (doc / "index.md").read_text()
-    first = re.search(r"```\{toctree\}\n(.*?)```", index, re.S)
-    if not first:
-        sys.exit(f"{doc / 'index.md'}: no toctree")
-    return [line.strip() for line in first.group(1).splitlines()
-            if line.strip() and not line.strip().startswith(":")]
+    for block in re.findall(r"```\{toctree\}\n(.*?)```", index, re.S):
+        lines = [line.strip() for line in block.splitlines() if line.strip()]
+        if ":caption: Commands" in lines:
+            return [line for line in lines if not line.startswith(":")]
+    sys.exit(f"{doc / 'index.md'}: no toctree captioned 'Commands'")
 
 
-def headings(page):
-    """The '## ' headings of a page, outside code blocks."""
-    found, fence = [], False
-    for line in page.read_text().splitlines():
-        if line.startswith("```"):
-            fence = not fence
-        elif not fence and line.startswith("## "):
-            found.append(line[3:].strip())
+def sections(text):
+    """(title, underline character) of every section heading of an rst text, in order."""
+    lines = text.splitlines()
+    found = []
+    for k in range(len(lines) - 1):
+        title, under = lines[k].rstrip(), lines[k + 1].rstrip()
+        if (title and not title.startswith(" ") and len(under) >= len(title) and len(set(under)) == 1
+                and under[0] in "=\"^-~*#+'" and (k == 0 or not lines[k - 1].strip())):
+            found.append((title, under[0]))
     return found
 
 
+def non_ascii(page):
+    """A problem per line of the page that holds a byte outside ASCII."""
+    return [f"line {number}: not ASCII: {line.decode('utf-8', 'replace').strip()[:70]}"
+            for number, line in enumerate(page.read_bytes().splitlines(), 1) if any(b > 127 for b in line)]
+
+
 def layout_problems(page):
-    found = headings(page)
-    missing = [s for s in SECTIONS if s not in found]
+    problems = non_ascii(page)
+    text = page.read_bytes().decode("utf-8", "replace")
+    if not re.search(r"^\.\. index:: ", text, re.M):
+        problems.append("no '.. index::' line")
+    found = sections(text)
+    if not found or found[0][1] != "=" or not found[0][0].endswith(" command"):
+        problems.append("the title is not '... command' underlined with '='")
+    top = ["Restart" if title in RESTART_SECTIONS else title for title, mark in found if mark == '"']
+    missing = [s for s in SECTIONS if s not in top]
     if missing:
-        return "no section " + ", ".join(missing)
-    present = [h for h in found if h in SECTIONS]
-    if present != SECTIONS:
-        return "sections out of order: " + ", ".join(present)
-    return ""
+        problems.append("no section " + ", ".join(missing))
+    else:
+        present = [t for t in top if t in SECTIONS]
+        if present != SECTIONS:
+            problems.append("sections out of order: " + ", ".join(present))
+    return problems
+
+
+def dangling_pointers(repo):
+    """file:line: doc/<page> for every pointer to a page of doc/ that does not exist."""
+    doc = repo / "doc"
+    files = [repo / name for name in POINTER_FILES]
+    for folder in POINTER_DIRS:
+        files += [p for p in sorted((repo / folder).rglob("*")) if p.is_file()]
+    problems = []
+    for path in files:
+        rel = path.relative_to(repo)
+        if path.suffix not in TEXT_SUFFIXES or (rel.parts[0] == "examples" and path.name.startswith("log.")):
+            continue
+        try:
+            text = path.read_text()
+        except (UnicodeDecodeError, OSError):
+            continue
+        for number, line in enumerate(text.splitlines(), 1):
+            for page in POINTER.findall(line):
+                if not (doc / page).is_file():
+                    problems.append(f"{rel}:{number}: points to doc/{page}, which does not exist")
+    return problems
 
 
 def main():
@@ -62,12 +123,25 @@ def main():
     pages = command_pages(doc)
     bad = 0
     for name in pages:
-        problem = layout_problems(doc / f"{name}.md")
-        if problem:
+        page = doc / f"{name}.rst"
+        if not page.is_file():
             bad += 1
-            print(f"doc/{name}.md: {problem}")
+            print(f"doc/{name}.rst: missing (command pages are reStructuredText)")
+            continue
+        for problem in layout_problems(page):
+            print(f"doc/{name}.rst: {problem}")
+        bad += bool(layout_problems(page))
     print(f"{len(pages)} command pages, {bad} not in the layout of a LAMMPS reference page")
-    return 1 if bad else 0
+    others = [page for page in sorted(doc.glob("*.rst")) if page.stem not in pages]
+    for page in others:
+        for problem in non_ascii(page):
+            bad += 1
+            print(f"doc/{page.name}: {problem}")
+    dangling = dangling_pointers(doc.resolve().parent)
+    for problem in dangling:
+        print(problem)
+    print(f"{len(dangling)} pointers to pages of doc/ that do not exist")
+    return 1 if bad or dangling else 0
 
 
 if __name__ == "__main__":

@@ -15,8 +15,8 @@
 against the closed-form law, computed here independently of LAMMPS and of lib/wire:
 
   bond_style wire   f = k_elo (L - r0) / r0 along the bond, E = k_elo (L - r0)^2 / (2 r0);
-                    zero for L < r0 with 'string yes'           (doc/bond_style_wire.md)
-  angle_style wire  E = k_rot (pi - theta)^2 / 2, forces = -grad E  (doc/angle_style_wire.md)
+                    zero for L < r0 with 'string yes'           (doc/bond_style_wire.rst)
+  angle_style wire  E = k_rot (pi - theta)^2 / 2, forces = -grad E  (doc/angle_style_wire.rst)
 
 on the testers' molecule (data.fourmol): init_energy, init_forces (every atom) and
 init_stress (the virial, xx yy zz xy xz yz) must agree to 1e-10 relative. LAMMPS' tester in

@@ -56,7 +56,7 @@ case "$name" in
            -var thermo_every 100 -var dump_every 100000 -var column_deck "$src/../column/in.column")
     "${launch[@]}" "$lmp" -in "$deck" -log log.string "${small[@]}" > screen.txt
     grep -q "^phase 5 done" log.string || { echo "string: phase 5 not reached"; exit 1; }
-    ! grep -q "ERROR\|Lost atoms\|from their rest length" log.string
+    ! grep -q "ERROR\|Lost atoms\|from rest length" log.string
     [ "$(grep -c '^create_wire: .*continuing molecule 1 from its end node' log.string)" -eq 4 ] ||
       { echo "string: expected 2 risers and 2 loops continued"; exit 1; }
     awk '/^create_wire: / { for (k = 1; k <= NF; k++) { if ($k == "nodes") n += $(k-1); if ($k == "elements") e += $(k-1) }

@@ -448,7 +448,7 @@ TEST_F(WireInputTest, AWireInsideAGrainAtTheStartOfARunIsWarnedAbout)
   commands({"create_wire 2 line -3 0 0.5 3 0 0.5 bond 1 angle 1 mass 0.01 radius 0.02 overlap ignore",
             "group wire type 2", "fix solver grains nscd", "fix w wire wire radius 0.02 k_n 200"});
   const std::string log = log_of({"run 0"});
-  EXPECT_TRUE(has(log, "lies inside grain ID 1 by 0.52 (26 wire radii) at the start (doc/fix_wire.md, Errors)")) << log;
+  EXPECT_TRUE(has(log, "lies inside grain ID 1 by 0.52 (26 wire radii) at the start (doc/fix_wire.rst, Errors)")) << log;
   // a wire resting on the cube (0.001 into it): no warning
   commands({"delete_atoms group wire bond yes", "create_wire 2 line -3 0 1.019 3 0 1.019 bond 1 angle 1 mass 0.01",
             "group wire type 2"});

@@ -373,7 +373,7 @@ TEST_F(CreateWireTest, JoinBendsLikeAnInnerJoint)
 }
 
 // A helix continued from its end by the next layer's riser and helix, as a layered string
-// is laid (doc/create_wire.md): one molecule, one chain, every element at the rest length.
+// is laid (doc/create_wire.rst): one molecule, one chain, every element at the rest length.
 TEST_F(CreateWireTest, HelixRiserHelixIsOneChain)
 {
   box();
@@ -463,7 +463,7 @@ TEST_F(CreateWireTest, FixWireWarnsAboutAnElementFarFromItsRestLength)
             "create_wire 1 line -0.2 3 4 1.8 3 4 bond 1 angle 1 mass 0.01 radius 0.02",
             "create_bonds single/bond 1 " + std::to_string(n + 11) + " " + std::to_string(n + 12)});
   log = log_of("run 0 post no");
-  EXPECT_NE(log.find("1 elements start over 10 % from their rest length, worst 4 x (IDs " + std::to_string(n + 11) +
+  EXPECT_NE(log.find("1 elements start over 10 % from rest length, worst 4 x (IDs " + std::to_string(n + 11) +
                      "-" + std::to_string(n + 12) + ")"), std::string::npos) << log;
 }
 

@@ -834,7 +834,7 @@ TEST_F(NSCDTest, RestartWrittenOnOneRankContinuesOnAll)
   }
 }
 
-// ---- warm-start impulses kept with their atoms (doc/fix_nscd.md, "Restart") ----
+// ---- warm-start impulses kept with their atoms (doc/fix_nscd.rst, "Restart") ----
 
 // Warm-start records held by the ranks of `world`: {summed, most on one rank, summed of
 // those concerning no atom of the holding rank}.

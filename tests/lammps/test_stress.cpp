@@ -13,7 +13,7 @@
 ------------------------------------------------------------------------- */
 
 // compute nscd/stress/atom and nscd/crush/atom against closed forms
-// (doc/compute_nscd_stress_atom.md, doc/compute_nscd_crush_atom.md): a rounded
+// (doc/compute_nscd_stress_atom.rst, doc/compute_nscd_crush_atom.rst): a rounded
 // cube pressed between floor and plate carries sigma_zz V = -(plate force + m g / 2) x its
 // height; a pile at rest on a floor (frictionless side walls) has sum_i sigma_zz,i V_i =
 // -g sum_i m_i z_i (internal contacts cancel, the floor's points lie at z = 0); a ball

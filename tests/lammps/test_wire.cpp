@@ -561,7 +561,7 @@ TEST_F(WireOnGrainTest, RestartMovesBetweenRankCounts)
   }
 }
 
-// ---- friction memories kept with their atoms (doc/fix_wire.md, "Restart") ----
+// ---- friction memories kept with their atoms (doc/fix_wire.rst, "Restart") ----
 
 // Friction memories held by the ranks of `world`: {summed, most on one rank, summed of those
 // whose contact the holding rank does not compute (its first node owned elsewhere)}.
@@ -811,7 +811,7 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   EXPECT_NE(error_of("fix w wire wire k_n 1 mu_s 0.2 mu_d 0.5").find("mu"), std::string::npos);
   const std::string bogus = error_of("fix w wire wire radius 0.02 bogus 1");
   EXPECT_NE(bogus.find("unknown keyword 'bogus'"), std::string::npos) << bogus;
-  EXPECT_NE(bogus.find("keywords are listed in doc/fix_wire.md, Syntax"), std::string::npos) << bogus;
+  EXPECT_NE(bogus.find("keywords are listed in doc/fix_wire.rst, Syntax"), std::string::npos) << bogus;
   // grain_friction TYPES MU_S MU_D: three values, types in range, 0 <= mu_d <= mu_s
   const std::string short_list = error_of("fix w wire wire k_n 1 radius 0.02 grain_friction 1 0.3");
   EXPECT_NE(short_list.find("grain_friction needs three values"), std::string::npos) << short_list;
@@ -823,7 +823,7 @@ TEST_F(WireTest, BadOptionsAndPartnersAreNamedErrors)
   const std::string early = error_of("fix w wire wire radius k_n 100");
   EXPECT_NE(early.find("keyword 'radius' needs a value"), std::string::npos) << early;
   EXPECT_NE(early.find("'k_n'"), std::string::npos) << early;
-  EXPECT_NE(early.find("doc/fix_wire.md, Syntax"), std::string::npos) << early;
+  EXPECT_NE(early.find("doc/fix_wire.rst, Syntax"), std::string::npos) << early;
   const std::string last = error_of("fix w wire wire radius 0.02 k_n");
   EXPECT_NE(last.find("keyword 'k_n' needs a value"), std::string::npos) << last;
   EXPECT_NE(error_of("fix w wire wire k_n 100").find("need a wire radius > 0"), std::string::npos);
@@ -1833,7 +1833,7 @@ TEST_F(WireTest, CommunicationBetweenRanksIsCountedAsByHand)
   const double pairs = summed((double) (std::unique(sources.begin(), sources.end()) - sources.begin()));
   const double messages = 2.0 * pairs;
   if (ranks() == 2) {
-    EXPECT_EQ(messages, 4.0);    // as LAMMPS' comm sent them before (doc/fix_wire.md, "Speed")
+    EXPECT_EQ(messages, 4.0);    // as LAMMPS' comm sent them before (doc/wire_speed.md, "Speed")
   }
   if (rank() == 0)
     std::printf("[ INFO     ] %d ranks: %g ghost nodes, %g substeps: %g messages, %g bytes in the substeps\n",

@@ -12,7 +12,7 @@
    Contributing author: the NSCD package developers
 ------------------------------------------------------------------------- */
 
-// fix wire's option strength (doc/fix_wire.md, "Breaking"): a wire clamped at one end and
+// fix wire's option strength (doc/fix_wire.rst, "Breaking"): a wire clamped at one end and
 // pulled at the other by a slowly growing force carries that force as its tension; an element
 // breaks in the step its tension reaches its strength, leaves the bond and angle topology on
 // every rank, and a restart after the break keeps the broken wire. Serially and on 2 and 4
