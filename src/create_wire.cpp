@@ -725,7 +725,14 @@ void CreateWire::drop_onto_what_is_below()
   for (Fix *fix : modify->get_fix_list())
     if (auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix)) boundaries.push_back(boundary_fix);
   const WireElements existing = existing_wire_elements({});
-  const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, r.layout.nodes);
+  // down to the box's floor (a periodic box: one box height); the periodic images to check
+  // are those the wire can reach anywhere along the way
+  double lowest = r.layout.nodes[0].z();
+  for (const nscd::Vec3 &x : r.layout.nodes) lowest = std::min(lowest, x.z());
+  const double max_drop = domain->zperiodic ? domain->zprd : std::max(0.0, lowest - r.radius - domain->boxlo[2]);
+  std::vector<nscd::Vec3> swept = r.layout.nodes;
+  for (const nscd::Vec3 &x : r.layout.nodes) swept.push_back(x - max_drop * nscd::Vec3::UnitZ());
+  const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, swept);
   const nscd::wire::WirePieces laid{r.layout.nodes, r.layout.topology.elements};
 
   auto depth = [&](double drop) {
@@ -747,10 +754,6 @@ void CreateWire::drop_onto_what_is_below()
     return everywhere;
   };
 
-  // down to the box's floor (a periodic box: one box height)
-  double lowest = r.layout.nodes[0].z();
-  for (const nscd::Vec3 &x : r.layout.nodes) lowest = std::min(lowest, x.z());
-  const double max_drop = domain->zperiodic ? domain->zprd : std::max(0.0, lowest - r.radius - domain->boxlo[2]);
   const nscd::wire::Drop drop = nscd::wire::first_touch_drop(depth, max_drop, r.radius, 1e-6 * r.radius);
   if (!drop.touched)
     error->all(FLERR, "create_wire {}: 'drop yes': nothing below the wire within {:.4g} (the box's floor); lay it "

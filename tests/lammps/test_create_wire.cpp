@@ -508,3 +508,20 @@ TEST_F(CreateWireTest, DropLaysTheWireOnWhatLiesBelow)
   EXPECT_NE(error_of("create_wire 1 line 3 -2 4 3 -1 4 from last drop yes").find("'drop' cannot be combined"),
             std::string::npos);
 }
+
+// Across a periodic boundary: a ring centred 0.2 inside the box's +x face, half of it
+// wrapped to the -x side, drops onto a grain standing just inside the -x face (seen through
+// its periodic image), not onto the floor.
+TEST_F(CreateWireTest, DropFindsAGrainThroughThePeriodicBoundary)
+{
+  const double r = 0.02;
+  box("p p f");
+  commands({"pair_style nscd", "pair_coeff * * 0.5", "fix floor all nscd/wall plane 0 0 0 0 0 1",
+            "create_atoms 2 single -3.9 0 0.6", "shapes assign all shape 1 density 1"});
+  run("create_wire 1 loop 3.8 0 3 0.5 bond 1 mass 0.01 radius 0.02 drop yes gap 10");
+  double lowest = 1e300;
+  for (const auto &[tag, node] : nodes())
+    if (node.type == 1) lowest = std::min(lowest, node.x[2]);
+  EXPECT_GT(lowest, r + 0.1);    // held above the floor by the grain's image
+  EXPECT_LT(lowest, 3.0);
+}
