@@ -582,21 +582,37 @@ static std::vector<nscd::Vec3> periodic_shifts(const Domain *domain, const std::
   return shifts;
 }
 
+/* This rank's grains where they stand, for the overlap checks (and their atom IDs). */
+static std::vector<nscd::wire::PlacedGrain> local_grains(LAMMPS *lmp, std::vector<tagint> *tags = nullptr)
+{
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
+  std::vector<nscd::wire::PlacedGrain> grains;
+  for (int i = 0; i < lmp->atom->nlocal; i++) {
+    if (avec->shape[i] == 0) continue;
+    grains.push_back({&avec->shape_of(i), avec->pose(i)});
+    if (tags) tags->push_back(lmp->atom->tag[i]);
+  }
+  return grains;
+}
+
+/* The walls and plates (fix nscd/wall, fix nscd/plate) a wire must not start in. */
+static std::vector<NSCDBoundaryFix *> boundary_fixes(Modify *modify)
+{
+  std::vector<NSCDBoundaryFix *> found;
+  for (Fix *fix : modify->get_fix_list())
+    if (auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix)) found.push_back(boundary_fix);
+  return found;
+}
+
 /* The wire must not start inside grains or walls: each rank tests its own grains (and their
    periodic images) against the elements near them, every rank the walls against the node
    spheres; the deepest overlap beyond the tolerance stops the command, named. */
 void CreateWire::check_overlaps()
 {
   Request &r = *request;
-  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
   const double allowed = r.overlap * r.radius;
-  std::vector<nscd::wire::PlacedGrain> grains;
   std::vector<tagint> grain_tags;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (avec->shape[i] == 0) continue;
-    grains.push_back({&avec->shape_of(i), avec->pose(i)});
-    grain_tags.push_back(atom->tag[i]);
-  }
+  const std::vector<nscd::wire::PlacedGrain> grains = local_grains(lmp, &grain_tags);
   const nscd::wire::ElementOverlap o = nscd::wire::deepest_overlap_with_grains(
       {r.layout.nodes, r.layout.topology.elements}, r.radius, grains, periodic_shifts(domain, r.layout.nodes));
   double worst[2] = {o.b >= 0 ? o.depth : -1.0, o.b >= 0 ? (double) grain_tags[o.b] : 0.0};    // depth, grain ID
@@ -606,16 +622,13 @@ void CreateWire::check_overlaps()
     error->all(FLERR, "create_wire {}: the wire overlaps grain ID {} by {:.4g} (allowed: {:.4g}); see "
                "doc/create_wire.rst, Errors", r.shape_name, (tagint) deepest[1], deepest[0], allowed);
 
-  for (Fix *fix : modify->get_fix_list()) {
-    auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
-    if (!boundary_fix) continue;
+  for (NSCDBoundaryFix *boundary_fix : boundary_fixes(modify))
     for (size_t k = r.first_new(); k < r.in_box.size(); k++) {
       const nscd::ContactPoint p = boundary_fix->boundary().touch_sphere(r.in_box[k], r.radius, 0.0);
       if (-p.gap > allowed)
         error->all(FLERR, "create_wire {}: node {} overlaps the wall or plate of fix {} by {:.4g} (allowed: "
-                   "{:.4g}); doc/create_wire.rst, Errors", r.shape_name, k + 1, fix->id, -p.gap, allowed);
+                   "{:.4g}); doc/create_wire.rst, Errors", r.shape_name, k + 1, dynamic_cast<Fix *>(boundary_fix)->id, -p.gap, allowed);
     }
-  }
 }
 
 /* The new wire must not lie on itself (turns of a helix closer than its diameter, a loop
@@ -717,13 +730,8 @@ CreateWire::WireElements CreateWire::existing_wire_elements(const std::vector<st
 void CreateWire::drop_onto_what_is_below()
 {
   Request &r = *request;
-  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
-  std::vector<nscd::wire::PlacedGrain> grains;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (avec->shape[i] != 0) grains.push_back({&avec->shape_of(i), avec->pose(i)});
-  std::vector<NSCDBoundaryFix *> boundaries;
-  for (Fix *fix : modify->get_fix_list())
-    if (auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix)) boundaries.push_back(boundary_fix);
+  const std::vector<nscd::wire::PlacedGrain> grains = local_grains(lmp);
+  const std::vector<NSCDBoundaryFix *> boundaries = boundary_fixes(modify);
   const WireElements existing = existing_wire_elements({});
   // down to the box's floor (a periodic box: one box height); the periodic images to check
   // are those the wire can reach anywhere along the way
@@ -733,11 +741,10 @@ void CreateWire::drop_onto_what_is_below()
   std::vector<nscd::Vec3> swept = r.layout.nodes;
   for (const nscd::Vec3 &x : r.layout.nodes) swept.push_back(x - max_drop * nscd::Vec3::UnitZ());
   const std::vector<nscd::Vec3> shifts = periodic_shifts(domain, swept);
-  const nscd::wire::WirePieces laid{r.layout.nodes, r.layout.topology.elements};
+  nscd::wire::WirePieces lowered{r.layout.nodes, r.layout.topology.elements};
 
   auto depth = [&](double drop) {
-    nscd::wire::WirePieces lowered = laid;
-    for (nscd::Vec3 &x : lowered.nodes) x.z() -= drop;
+    for (size_t k = 0; k < lowered.nodes.size(); k++) lowered.nodes[k] = r.layout.nodes[k] - drop * nscd::Vec3::UnitZ();
     double deepest = -1.0;
     const nscd::wire::ElementOverlap on_grain = nscd::wire::deepest_overlap_with_grains(lowered, r.radius, grains, shifts);
     if (on_grain.b >= 0) deepest = std::max(deepest, on_grain.depth);
