@@ -57,6 +57,7 @@ class Measures(unittest.TestCase):
         self.assertAlmostEqual(m["r_median"], radius, places=12)
         self.assertAlmostEqual(m["turns"], turns, places=12)
         self.assertAlmostEqual(m["z_mean"], 4.0 + 0.5 * turns * pitch, places=12)
+        self.assertAlmostEqual(m["z_span"], turns * pitch, places=12)    # the helix's rise
         self.assertAlmostEqual(m["length"], (nodes - 1) * chord, places=10)
         self.assertAlmostEqual(m["horizontal_length"], (nodes - 1) * 2.0 * radius * math.sin(0.5 * step), places=10)
         self.assertAlmostEqual(m["slack"], (nodes - 1) * chord / (2.0 * math.pi * radius * turns) - 1.0, places=12)
@@ -75,6 +76,7 @@ class Measures(unittest.TestCase):
         fine = np.linspace(0.0, 2.0 * math.pi, 400001)
         exact = np.trapz(np.sqrt(radius ** 2 + (waves * amplitude * np.cos(waves * fine)) ** 2), fine)
         self.assertAlmostEqual(m["turns"], 1.0, places=12)
+        self.assertAlmostEqual(m["z_span"], 2.0 * amplitude, places=12)    # crests 4000 / 32 nodes apart
         self.assertAlmostEqual(m["length"] / exact, 1.0, delta=1e-5)
         self.assertAlmostEqual(m["slack"], exact / (2.0 * math.pi * radius) - 1.0, delta=1e-5)
         self.assertGreater(m["slack"], 0.02)
@@ -105,6 +107,7 @@ class Command(unittest.TestCase):
         self.assertAlmostEqual(float(rows[0]["r_median"]), 2.5, places=5)
         self.assertAlmostEqual(float(rows[1]["r_median"]), 2.0, places=5)
         self.assertAlmostEqual(float(rows[1]["turns"]), 1.8, places=5)
+        self.assertAlmostEqual(float(rows[1]["z_span"]), 1.8 * 0.12, places=5)
 
 
 if __name__ == "__main__":

@@ -439,7 +439,7 @@ def cmd_vtk_wire(args):
 
 # --- wire-loops: how taut each loop is ---------------------------------------------------
 
-LOOP_FIELDS = ("nodes", "z_mean", "r_median", "turns", "length", "horizontal_length", "circle", "slack")
+LOOP_FIELDS = ("nodes", "z_mean", "z_span", "r_median", "turns", "length", "horizontal_length", "circle", "slack")
 
 
 def cmd_wire_loops(args):

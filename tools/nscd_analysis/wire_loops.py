@@ -51,9 +51,11 @@ def chains(id1, id2):
 
 def loop_measures(points, closed, axis=(0.0, 0.0)):
     """Measures of one chain (points in path order, n x 3) about a vertical axis through
-    axis = (X, Y): a dict of nodes, z_mean, r_median, turns (signed turns spanned about the
-    axis), length (sum of the element lengths, the closing one of a ring included),
-    horizontal_length, circle (r_median times the angle spanned) and slack (length / circle - 1)."""
+    axis = (X, Y): a dict of nodes, z_mean, z_span (highest node minus lowest: how far the
+    chain has warped out of a horizontal plane, a helix's own rise included), r_median, turns
+    (signed turns spanned about the axis), length (sum of the element lengths, the closing one
+    of a ring included), horizontal_length, circle (r_median times the angle spanned) and
+    slack (length / circle - 1)."""
     p = np.asarray(points, dtype=float)
     if closed:
         p = np.vstack([p, p[:1]])
@@ -67,6 +69,7 @@ def loop_measures(points, closed, axis=(0.0, 0.0)):
     nodes = len(points)
     r_median = float(np.median(r[:nodes]))
     circle = r_median * abs(spanned)
-    return {"nodes": nodes, "z_mean": float(z[:nodes].mean()), "r_median": r_median,
+    return {"nodes": nodes, "z_mean": float(z[:nodes].mean()), "z_span": float(np.ptp(z[:nodes])),
+            "r_median": r_median,
             "turns": spanned / (2.0 * np.pi), "length": length, "horizontal_length": horizontal,
             "circle": circle, "slack": length / circle - 1.0 if circle > 0.0 else float("nan")}
