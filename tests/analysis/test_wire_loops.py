@@ -76,7 +76,7 @@ class Measures(unittest.TestCase):
         fine = np.linspace(0.0, 2.0 * math.pi, 400001)
         exact = np.trapz(np.sqrt(radius ** 2 + (waves * amplitude * np.cos(waves * fine)) ** 2), fine)
         self.assertAlmostEqual(m["turns"], 1.0, places=12)
-        self.assertAlmostEqual(m["z_span"], 2.0 * amplitude, places=12)    # crests 4000 / 32 nodes apart
+        self.assertAlmostEqual(m["z_span"], 2.0 * amplitude, places=12)    # a crest on node 4000 / 32
         self.assertAlmostEqual(m["length"] / exact, 1.0, delta=1e-5)
         self.assertAlmostEqual(m["slack"], exact / (2.0 * math.pi * radius) - 1.0, delta=1e-5)
         self.assertGreater(m["slack"], 0.02)
