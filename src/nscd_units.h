@@ -34,8 +34,9 @@ namespace NSCD_NS {
 inline void require_plain_mechanics(LAMMPS *lmp, const char *style)
 {
   if (lmp->force->ftm2v == 1.0 && lmp->force->mvv2e == 1.0) return;
-  lmp->error->all(FLERR, "{}: units {} convert force to mass x acceleration by {:.6g}; use units lj, si, "
-                  "cgs, micro or nano (doc/units.md)", style, lmp->update->unit_style, lmp->force->ftm2v);
+  lmp->error->all(FLERR, "{}: units {} convert force to mass x accel by {:.6g}; use units lj, si, cgs, "
+                  "micro or nano (doc/Howto_nscd_units.rst)",
+                  style, lmp->update->unit_style, lmp->force->ftm2v);
 }
 
 }    // namespace NSCD_NS

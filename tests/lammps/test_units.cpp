@@ -12,7 +12,7 @@
    Contributing author: the NSCD package developers
 ------------------------------------------------------------------------- */
 
-// examples/units/in.units in LJ, SI and CGS units (doc/units.md): the package has no
+// examples/units/in.units in LJ, SI and CGS units (doc/Howto_nscd_units.rst): the package has no
 // hidden dimensional constant. With scales that are powers of two (grain size, mass and time
 // units 2^k) every product and quotient of the run is exact in binary, so a unit system
 // changes no bit of the dimensionless trajectory: grains falling with a wire loop onto a
