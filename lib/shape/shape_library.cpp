@@ -124,7 +124,7 @@ class LibraryParser {
     }
     if (parsed_.empty()) {
       fail_at(std::max(line_number_, 1), "no shape found (empty library); the format is in "
-                                         "doc/shape_library_format.md");
+                                         "doc/Howto_nscd_shape_library_format.rst");
     }
     return parsed_;
   }

@@ -13,7 +13,8 @@
 ------------------------------------------------------------------------- */
 
 // A numbered collection of grain shapes (ids 1..N, as LAMMPS types), with optional names,
-// a text file format (doc/shape_library_format.md) and an exact serialisation for restarts.
+// a text file format (doc/Howto_nscd_shape_library_format.rst) and an exact serialisation
+// for restarts.
 #pragma once
 
 #include "shape/spheropolyhedron.h"

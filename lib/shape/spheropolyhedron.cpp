@@ -36,10 +36,10 @@ constexpr double kRelativeTolerance = 1e-10;
 // Principal moments closer than this (relative to the largest) are treated as equal: the
 // axes in that plane are then taken from the input axes (see choose_principal_axes).
 constexpr double kDegenerateMoments = 1e-10;
-// Supported lengths (doc/shape_library_format.md, "Size limits"): |coordinate| and radius
-// at most kMaxLength, grain size at least kMinLength. Then volume (~ size^3) and inertia
-// per unit density (~ size^5) stay far inside the range of doubles, also once multiplied
-// by a density and divided into torques later.
+// Supported lengths (doc/Howto_nscd_shape_library_format.rst, "Size limits"): |coordinate|
+// and radius at most kMaxLength, grain size at least kMinLength. Then volume (~ size^3) and
+// inertia per unit density (~ size^5) stay far inside the range of doubles, also once
+// multiplied by a density and divided into torques later.
 constexpr double kMaxLength = 1e30;
 constexpr double kMinLength = 1e-30;
 // Principal moments are resolved to ~1e-16 of the largest one; a needle whose smallest
@@ -344,7 +344,7 @@ void check_mass_properties(const Spheropolyhedron &shape)
       !usable(shape.bounding_radius)) {
     throw ShapeError("the shape's volume " + describe(shape.volume) + " or principal inertia " +
                      describe(inertia) + " is not a finite positive number; give points and a radius "
-                     "within the size limits of doc/shape_library_format.md");
+                     "within the size limits of doc/Howto_nscd_shape_library_format.rst");
   }
   if (inertia.minCoeff() < kMinMomentRatio * inertia.maxCoeff()) {
     throw ShapeError("the shape is a needle: its principal moments of inertia " + describe(inertia) +

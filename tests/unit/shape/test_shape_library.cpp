@@ -292,8 +292,17 @@ TEST(ShapeLibrary, ExampleOfTheFormatPageReads)
   std::stringstream all;
   all << page.rdbuf();
   const std::string text = all.str();
-  const auto start = text.find("```\n", text.find("## Example")) + 4;
-  const auto example = text.substr(start, text.find("```", start) - start);
+  // The example is the code block of the page's section 'Example' (reStructuredText): its
+  // lines indented by three spaces, up to the first line that is not.
+  const auto section = text.find("\nExample\n-------\n");
+  ASSERT_NE(section, std::string::npos) << "no section 'Example' in " << NSCD_FORMAT_DOC;
+  const std::string directive = ".. code-block:: none\n\n";
+  const auto block = text.find(directive, section);
+  ASSERT_NE(block, std::string::npos) << "no code block in the section 'Example'";
+  std::istringstream lines(text.substr(block + directive.size()));
+  std::string example;
+  for (std::string line; std::getline(lines, line) && (line.empty() || line.rfind("   ", 0) == 0);)
+    example += (line.empty() ? line : line.substr(3)) + "\n";
   const auto library = read_text(example, "doc example");
   ASSERT_EQ(library.size(), 4);
   EXPECT_NEAR(library.shape(1).volume, 6.0, 1e-14);
