@@ -98,7 +98,7 @@ MassMoments edge_wedge_moments(const Vec3 &a, const Vec3 &b, const Vec3 &n1, con
 // Normal cone of a vertex, as the moments of the directions d over its spherical polygon:
 // solid angle, integral of d and integral of d d^T. The last two follow from the
 // divergence theorem on the unit cone; each side plane is orthogonal to an edge at the
-// vertex (see doc/shapes_physics.md).
+// vertex (see doc/Howto_nscd_shapes_physics.rst).
 struct ConeMoments {
   double solid_angle = 0.0;
   Vec3 first = Vec3::Zero();

@@ -18,7 +18,7 @@
 // The dilated polyhedron P + B(r) is cut into disjoint pieces whose moments have closed
 // forms: the core polyhedron, one prism per face (face x [0, r] along its normal), one
 // cylindrical wedge per edge (opening = exterior dihedral angle) and one spherical sector
-// per vertex (over the vertex's normal cone). See doc/shapes_physics.md.
+// per vertex (over the vertex's normal cone). See doc/Howto_nscd_shapes_physics.rst.
 #pragma once
 
 #include "math/types.h"
