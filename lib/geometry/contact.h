@@ -19,7 +19,7 @@
 // exact on the cores (no sampling, no iteration tolerance beyond round-off) and allocate
 // no heap memory once their ContactWorkspace has grown to the largest shape seen.
 //
-// Conventions (doc/contact_geometry.md has the details and the reasons):
+// Conventions (doc/Howto_nscd_contact_geometry.rst has the details and the reasons):
 //  * contact(i, j): the normal points from j to i (it pushes i away from j);
 //  * gap = distance between the dilated surfaces, negative when they overlap;
 //  * point = midpoint between the two dilated surfaces along the normal;
@@ -62,7 +62,8 @@ struct ContactSet {
   // given to the solver (it only stops the overlap of the points it sees from growing), and
   // a grain resting on a wall has ~8 vertices within a typical activation distance, so 8;
   // a box on a box gives its 4 corners, two turned squares the 8 corners of their octagon.
-  // Larger patches are reduced depth first, then for coverage (doc/contact_geometry.md).
+  // Larger patches are reduced depth first, then for coverage
+  // (doc/Howto_nscd_contact_geometry.rst).
   static constexpr int kMaxPoints = 8;
   std::array<ContactPoint, kMaxPoints> points{};
   int count = 0;
@@ -168,9 +169,10 @@ class ContactWorkspace {
 // Two grains i and j. Returns the contact points with gap <= activation (maybe none).
 // Where they meet edge- or corner-first, also the speculative points that a grain turning
 // about its first contact brings down within a step (vertices over faces, edges across the
-// borders of faces; doc/contact_geometry.md) with gaps up to speculative_distance (the
-// distance the pair can close within the step; at most the activation, at least 1e-3 of
-// the larger grain's bounding radius; 0: none). Throws ContactError for a NaN distance.
+// borders of faces; doc/Howto_nscd_contact_geometry.rst) with gaps up to
+// speculative_distance (the distance the pair can close within the step; at most the
+// activation, at least 1e-3 of the larger grain's bounding radius; 0: none). Throws
+// ContactError for a NaN distance.
 ContactSet contact_grains(const Spheropolyhedron &shape_i, const Pose &pose_i,
                           const Spheropolyhedron &shape_j, const Pose &pose_j,
                           double activation, ContactWorkspace &workspace,

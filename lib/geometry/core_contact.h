@@ -22,7 +22,7 @@ namespace nscd {
 namespace geometry_detail {
 
 // Relative tolerances, all multiplied by the length scale of the pair (the larger
-// bounding radius) or dimensionless. doc/contact_geometry.md explains each choice.
+// bounding radius) or dimensionless. doc/Howto_nscd_contact_geometry.rst explains each choice.
 struct Tolerance {
   // A point within this distance of a clipping plane is on it (round-off of the frame).
   static constexpr double kClip = 1e-9;

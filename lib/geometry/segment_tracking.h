@@ -22,7 +22,7 @@
 // known and the answer is computed in closed form, the same points, gaps and keys as
 // contact_segment_grain up to round-off (tests/unit/geometry/test_segment_tracking.cpp
 // compares both on random grains and motions). Otherwise contact_segment_grain answers and
-// its deepest point gives the next hint. doc/contact_geometry.md has the details.
+// its deepest point gives the next hint. doc/Howto_nscd_contact_geometry.rst has the details.
 #pragma once
 
 #include "geometry/contact.h"
