@@ -18,7 +18,7 @@
    (wire_step.h: Gear-5 subcycle, elastic forces, contact_model.h), which integrates the nodes,
    stores their positions and velocities, and hands the mean wire forces to the grains and the
    boundaries. Communication, per-atom arrays, restart and output: fix_wire_io.cpp; breaking:
-   fix_wire_break.cpp. The physics is in lib/wire (doc/wire_model.md). */
+   fix_wire_break.cpp. The physics is in lib/wire (doc/Howto_nscd_wire_model.rst). */
 
 #include "fix_wire.h"
 #include "nscd_checks.h"

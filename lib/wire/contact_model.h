@@ -16,7 +16,8 @@
 // loading plate). Each substep the caller hands the nodes' positions and velocities; the
 // model adds the contact forces to the nodes and the reactions to the grains' and
 // boundaries' sums, and updates each contact's friction memory. Used by fix wire (LAMMPS)
-// and tested in tests/unit/wire/test_contact_model.cpp. Model: doc/wire_model.md section 3b.
+// and tested in tests/unit/wire/test_contact_model.cpp. Model:
+// doc/Howto_nscd_wire_model.rst section 3b.
 //
 // The rules it implements:
 //  * each element-body pair is its own contact (the paper's model); forces go to an

@@ -24,7 +24,7 @@
 //   E_bending = k_rot * (nu - nu0)^2 / 2
 // and the kernels below return exactly -dE/dx on every node, so the forces sum to zero and
 // carry no net torque. They are pure functions of positions: the LAMMPS bond/angle styles
-// and the wire subcycle both call them. Derivations: doc/wire_model.md.
+// and the wire subcycle both call them. Derivations: doc/Howto_nscd_wire_model.rst.
 #pragma once
 
 #include "math/types.h"
@@ -120,7 +120,7 @@ ElasticEnergy add_elastic_forces(const WireTopology &topology, const std::vector
 // evaluated two at a time on contiguous arrays (Eigen Array2d), each element's direction
 // and length once for its law and both its joints; the rest one by one with
 // add_elastic_forces' laws. All results go to arrays first and are then summed per node in
-// add_elastic_forces' order. Details: doc/wire_model.md section 2b.
+// add_elastic_forces' order. Details: doc/Howto_nscd_wire_model.rst section 2b.
 class ElasticKernel {
  public:
   // Throws std::invalid_argument for a rest length <= 0 or a negative node index.

@@ -28,13 +28,13 @@
 
 namespace nscd::wire {
 
-// Only c_0 differs between Gear's two tables: 3/20 for forces that depend on positions
-// only, 3/16 for velocity-dependent forces (dashpots, friction). Measured on
-// x'' = -w^2 x - g x' (tests and doc/wire_model.md): both are 5th order once forces depend
-// on the velocity; 3/20 is 6th order for pure springs but amplifies undamped oscillations at
-// every step size (spectral radius 1 + 7e-10 at w dt = 0.1), whereas 3/16 damps them
-// slightly and is strictly stable up to w dt = 0.313. The wire's contacts are
-// velocity-dependent and its springs carry no dashpot, so 3/16 is the default.
+// Only c_0 differs between Gear's two tables: 3/20 for forces that depend on positions only,
+// 3/16 for velocity-dependent forces (dashpots, friction). Measured on x'' = -w^2 x - g x'
+// (tests and doc/Howto_nscd_wire_model.rst): both are 5th order once forces depend on the
+// velocity; 3/20 is 6th order for pure springs but amplifies undamped oscillations at every
+// step size (spectral radius 1 + 7e-10 at w dt = 0.1), whereas 3/16 damps them slightly and
+// is strictly stable up to w dt = 0.313. The wire's contacts are velocity-dependent and its
+// springs carry no dashpot, so 3/16 is the default.
 enum class GearCorrector {
   ThreeSixteenths,    // c0 = 3/16, default
   ThreeTwentieths,    // c0 = 3/20, Gear's value for position-only forces

@@ -25,7 +25,7 @@
 //              trial force f_t = -(k_t xi_t + gamma_t v_t). If |f_t| > mu f_n the contact
 //              slips: the spring is dropped and re-attached (see SlipReset) and the force is
 //              mu_d f_n along the trial direction. mu = mu_s while sticking, mu_d while
-//              sliding. Details and reasons: doc/wire_model.md.
+//              sliding. Details and reasons: doc/Howto_nscd_wire_model.rst.
 #pragma once
 
 #include "math/types.h"

@@ -18,11 +18,12 @@
 // spectral radius of its 6x6 step matrix is at most 1 (gear5_spectral_radius). Undamped,
 // that is w dt <= 0.313; pure drag, g dt <= 0.163; a little damping widens the range of w a
 // lot (w dt up to 0.74 at g dt = 0.02, 0.30 still at g dt = 0.14), heavy damping narrows it
-// (doc/wire_model.md, "Stability limits"). A wire's modes have frequencies up to w_max and
-// damping rates up to g_max, in any combination, and its axial modes are undamped: a step
-// is taken as stable when every (w, g) of the rectangle [0, w_max] x [0, g_max] is, i.e.
-// w_max dt <= 0.313 and the corner (w_max dt, g_max dt) is stable (the region's edge w(g)
-// falls monotonically beyond g dt = 0.02 and exceeds 0.313 below g dt = 0.139).
+// (doc/Howto_nscd_wire_model.rst, "Stability limits"). A wire's modes have frequencies up
+// to w_max and damping rates up to g_max, in any combination, and its axial modes are
+// undamped: a step is taken as stable when every (w, g) of the rectangle [0, w_max] x [0,
+// g_max] is, i.e. w_max dt <= 0.313 and the corner (w_max dt, g_max dt) is stable (the
+// region's edge w(g) falls monotonically beyond g dt = 0.02 and exceeds 0.313 below g dt =
+// 0.139).
 // For a wire, Gershgorin's theorem on the stiffness matrix (row sums) bounds the highest
 // angular frequency with node mass m and element length l:
 //   w_max^2 <= 4 k_eff / m,   k_eff = k_elo / l + 4 k_rot / l^2 + n_c k_n / 2

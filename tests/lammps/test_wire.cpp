@@ -357,7 +357,7 @@ TEST_F(WireTest, PulledWireReachesTheTensionAndElongationOfKelo)
 TEST_F(WireTest, CantileverDeflectsLikeTheDiscreteBeam)
 {
   // N = 10 elements of l = 0.1, EI = 1 -> k_rot = EI / l = 10; nodes 1, 2 clamp the root.
-  // Tip load F: delta = F l^3 / EI * (N-1) N (2N-1) / 6 (doc/wire_model.md section 2).
+  // Tip load F: delta = F l^3 / EI * (N-1) N (2N-1) / 6 (doc/Howto_nscd_wire_model.rst section 2).
   const int N = 10;
   const double l = 0.1, EI = 1.0, F = 1e-3;
   scene(straight_chain(N + 1, l, 0.01), N + 1, true, 1e4, l, EI / l);

@@ -244,7 +244,7 @@ TEST(Gear5Stability, SpectralRadiusGivesTheMeasuredLimits)
   EXPECT_LT(gear5_spectral_radius(0.0, 0.160, kind), 1.0);
   EXPECT_GT(gear5_spectral_radius(0.0, 0.166, kind), 1.0);
   // A little damping stabilises frequencies far above the undamped limit; heavy damping
-  // narrows the range (the table in doc/wire_model.md).
+  // narrows the range (the table in doc/Howto_nscd_wire_model.rst).
   EXPECT_LT(gear5_spectral_radius(0.70, 0.02, kind), 1.0);
   EXPECT_GT(gear5_spectral_radius(0.35, 0.15, kind), 1.0);
   // And runs agree where the radius says stable or not, on both sides of the edge.
