@@ -69,7 +69,7 @@ enum Diagnostic {
 };
 
 // Cell size of the coarse correction (nscd::SolverOptions::coarse_cell) in grain sizes:
-// "no" = off, "yes" = 2 (the size measured best, doc/nscd_solver.md), or a number > 0.
+// "no" = off, "yes" = 2 (the size measured best, doc/solver_speed.md), or a number > 0.
 double coarse_cell_of(const std::string &value, LAMMPS *lmp)
 {
   if (value == "no") return 0.0;
@@ -126,12 +126,12 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
   virial_global_flag = virial_peratom_flag = 1;
   thermo_virial = 1;
 
-  // Defaults (doc/fix_nscd.rst): theta = 1 lets no impact sink into an obstacle (with
-  // theta < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual
-  // is checked every 4 sweeps (it costs about a sweep); Nesterov momentum needs fewer
-  // sweeps than plain Gauss-Seidel on every measured scene, at no communication cost
-  // (doc/nscd_solver.md, "Acceleration"); tolerance 1e-4 converged at every step of every
-  // benchmark scene at its usual timestep within 220 sweeps (doc/BENCHMARKS.md), so
+  // Defaults (doc/fix_nscd.rst): theta = 1 lets no impact sink into an obstacle (with theta
+  // < 1 the old velocity carries a grain (1 - theta) dt |v| into it); the residual is
+  // checked every 4 sweeps (it costs about a sweep); Nesterov momentum needs fewer sweeps
+  // than plain Gauss-Seidel on every measured scene, at no communication cost
+  // (doc/Howto_nscd_solver.rst, "Acceleration"); tolerance 1e-4 converged at every step of
+  // every benchmark scene at its usual timestep within 220 sweeps (doc/BENCHMARKS.md), so
   // max_sweeps 1000 stops only steps that are going wrong, while 1e-6 left most loaded steps
   // unconverged at several times the cost for no smaller overlap (doc/BENCHMARKS.md,
   // "Tolerance against error").
@@ -805,7 +805,7 @@ void FixNSCD::prepare_problem()
 }
 
 /* write_problem: this step's contact problem as the solver gets it (before prepare()), one
-   file per rank, for benchmarks/solver/replay_problem (doc/nscd_solver.md). */
+   file per rank, for benchmarks/solver/replay_problem (doc/Howto_nscd_solver.rst). */
 void FixNSCD::write_problem()
 {
   const std::string name = comm->nprocs > 1 ? fmt::format("{}.{}", problem_file, comm->me) : problem_file;

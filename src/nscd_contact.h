@@ -31,11 +31,11 @@ namespace LAMMPS_NS {
 namespace NSCD_NS {
 
 // Speculative activation. Bodies closing at up to `closing_speed` (relative speed of their
-// centres plus each one's spin times its bounding radius) close a gap of up to that times
-// dt within the step; their contacts enter the problem as soon as the gap is below that, with
-// a margin for what the step's forces add, so no contact is found after it has closed. An
-// open contact only limits the approach to closing its gap (doc/nscd_solver.md), so an early
-// one adds no force. `base` is the smallest activation (a geometric tolerance). A speed
+// centres plus each one's spin times its bounding radius) close a gap of up to that times dt
+// within the step; their contacts enter the problem as soon as the gap is below that, with a
+// margin for what the step's forces add, so no contact is found after it has closed. An open
+// contact only limits the approach to closing its gap (doc/Howto_nscd_solver.rst), so an
+// early one adds no force. `base` is the smallest activation (a geometric tolerance). A speed
 // that is not finite gives `base`: the solve then stops naming the body (fix nscd), rather
 // than a geometric query failing on one rank.
 constexpr double SPECULATIVE_MARGIN = 1.5;

@@ -15,7 +15,7 @@
 // Solves a contact problem written by fix nscd's write_problem again, alone, with other
 // solver options: sweeps, residual and time (best of --repeat), and with --where the
 // residual at every check split by height (grain-grain | boundary contacts), to see where
-// a hard step's error sits. doc/nscd_solver.md, "Replaying a step".
+// a hard step's error sits. doc/Howto_nscd_solver.rst, "Replaying a step".
 //
 //   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
 //                  [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W]

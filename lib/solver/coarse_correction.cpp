@@ -13,7 +13,7 @@
 ------------------------------------------------------------------------- */
 
 // Coarse correction of the contact impulses (ContactProblem::coarse_correction), see
-// doc/nscd_solver.md, "Coarse correction".
+// doc/Howto_nscd_solver.rst, "Coarse correction".
 //
 // Gauss-Seidel moves load along a column or under a heavy plate by one contact per sweep,
 // so its error there is a smooth change of the normal impulses over many contacts. The

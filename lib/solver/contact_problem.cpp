@@ -296,7 +296,7 @@ void ContactProblem::build_row(const Contact &contact, std::size_t index, Row &r
   row.offset[0] -= row.normal_shift;
 }
 
-// The Signorini rule (doc/nscd_solver.md, "Which contacts act"): u_min, the lowest
+// The Signorini rule (doc/Howto_nscd_solver.rst, "Which contacts act"): u_min, the lowest
 // admissible end-of-step normal velocity, from the gap, the start-of-step normal velocity
 // u_n^- and g_theta = gap + (1 - theta) dt u_n^- (the end gap if u_n^+ = 0).
 double ContactProblem::lowest_normal_velocity(const Contact &contact, double u_n_start,

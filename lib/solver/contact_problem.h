@@ -15,13 +15,14 @@
 // The NSCD contact problem of one time step and its nonlinear Gauss-Seidel solver
 // (Moreau-Jean time stepping, Signorini condition and exact Coulomb friction, no
 // regularisation), with optional momentum acceleration and a coarse correction. See
-// doc/nscd_solver.md for the equations and the measured effect of each option.
+// doc/Howto_nscd_solver.rst for the equations and doc/solver_speed.md for the measured
+// effect of each option.
 //
 // Single rank:   fill bodies and contacts, then solve(problem, options).
 // Under domain decomposition: prepare() on every rank, then iterate() with a
 // SolverCommunication that exchanges ghost velocities and sums across ranks; iterate()
 // makes every decision from globally reduced numbers, so all ranks take the same ones.
-// Its loop, for drivers that keep their own (doc/nscd_solver.md, "Across ranks"):
+// Its loop, for drivers that keep their own (doc/Howto_nscd_solver.rst, "Across ranks"):
 //   problem.prepare(options); exchange();
 //   repeat {
 //     terms = reduce(problem.residual_terms());     // at a check (every check_every sweeps)
@@ -87,7 +88,7 @@ struct SolverBody {
   // corrections instead of summing them. The sum of their effects is then exactly
   // M^-1 times the sum of all impulses, so a converged solution is the whole system's; with
   // plain summing, k copies each stopping the same body overshoot k-fold and the sweeps
-  // diverge for k >= 3 (doc/nscd_solver.md). 1 everywhere on one rank without images.
+  // diverge for k >= 3 (doc/Howto_nscd_solver.rst). 1 everywhere on one rank without images.
   double share = 1.0;
 };
 
@@ -121,7 +122,7 @@ enum class SweepOrder : unsigned char {
   forward_backward,    // alternate forward and backward passes (symmetric Gauss-Seidel)
 };
 
-// Momentum on the Gauss-Seidel sweeps (doc/nscd_solver.md, "Acceleration"). After each
+// Momentum on the Gauss-Seidel sweeps (doc/Howto_nscd_solver.rst, "Acceleration"). After each
 // sweep every impulse moves on by beta times its change since the last sweep (projected
 // onto its cone), beta >= 0 growing while the iteration goes well:
 enum class Acceleration : unsigned char {
@@ -145,13 +146,13 @@ struct SolverOptions {
   // them unchanged unless a neighbour's impulse turns them around, and the next check
   // (which evaluates every contact) puts those back. The solution meets the same tolerance
   // on every contact; the path to it changes, and so does the trajectory: off by default
-  // until its effect on the column's outcome is settled (doc/nscd_solver.md, "Skipping
+  // until its effect on the column's outcome is settled (doc/solver_speed.md, "Skipping
   // separating contacts"). false: every sweep relaxes every contact.
   bool skip_separating = false;
   // A sliding contact's local solve starts Newton from its last slip direction instead of
   // sampling all 16 brackets (solve_local_coulomb's slip_guess): the same local solution
   // to round-off where it is unique, cheaper; the trajectory changes at round-off, so off by
-  // default until its effect on the outcome is settled (doc/nscd_solver.md, "Slip guess").
+  // default until its effect on the outcome is settled (doc/solver_speed.md, "Slip guess").
   bool slip_guess = false;
   double tolerance = 1e-6;     // on the scale-free residual (see ResidualTerms)
   int max_sweeps = 1000;
@@ -165,13 +166,13 @@ struct SolverOptions {
   // kinetic energy (at most m V^2 / 2 per grain and step), so keep V small.
   double overlap_speed = 0.0;
   Acceleration acceleration = Acceleration::none;
-  // Coarse correction (doc/nscd_solver.md, "Coarse correction"): the contacts of this rank
-  // are grouped into cubic cells of coarse_cell grain sizes (a grain size = twice the mean
-  // lever arm of the contacts); each group's normal impulses are scaled and shifted by
-  // common amounts solved from a small linear system. 0 = off. Applied at a residual
-  // check at most every coarse_every sweeps. It must keep paying: when the residual has
-  // not halved over the last max(coarse_patience, 2 coarse_every) sweeps, the solve goes on
-  // without it, from the impulses of the best residual so far.
+  // Coarse correction (doc/Howto_nscd_solver.rst, "Coarse correction"): the contacts of
+  // this rank are grouped into cubic cells of coarse_cell grain sizes (a grain size = twice
+  // the mean lever arm of the contacts); each group's normal impulses are scaled and
+  // shifted by common amounts solved from a small linear system. 0 = off. Applied at a
+  // residual check at most every coarse_every sweeps. It must keep paying: when the
+  // residual has not halved over the last max(coarse_patience, 2 coarse_every) sweeps, the
+  // solve goes on without it, from the impulses of the best residual so far.
   double coarse_cell = 0.0;
   int coarse_every = 1;
   int coarse_patience = 10;

@@ -16,8 +16,8 @@
 // the solver (before prepare(): start-of-step velocities, external impulses, warm-start
 // impulses) with the step's dt and theta, so a hard step of a LAMMPS run can be solved
 // again, alone, with other solver options (benchmarks/solver/replay_problem.cpp,
-// doc/nscd_solver.md "Replaying a step"). Doubles are written with 17 significant digits,
-// so a read problem is the written one bit for bit.
+// doc/Howto_nscd_solver.rst "Replaying a step"). Doubles are written with 17 significant
+// digits, so a read problem is the written one bit for bit.
 #pragma once
 
 #include "solver/contact_problem.h"

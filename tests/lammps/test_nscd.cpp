@@ -1001,7 +1001,7 @@ TEST_F(NSCDTest, RestartOfFormat3IsReadIntoTheAtoms)
   EXPECT_GT(cold, 10 * 3);
 }
 
-// ---- fix nscd method / coarse: lib/solver's accelerated iterations (doc/nscd_solver.md) ----
+// ---- fix nscd method / coarse: lib/solver's accelerated iterations (doc/Howto_nscd_solver.rst) --
 
 // Sum over ranks of the contact forces between each pair of grains (key: smaller ID, larger
 // ID; walls are 0), the sum of the pair's contact points, on the grain of the smaller ID.

@@ -12,7 +12,7 @@
    Contributing author: the NSCD package developers
 ------------------------------------------------------------------------- */
 
-// Newton's impact law wherever in a step an impact falls (doc/nscd_solver.md, "Which
+// Newton's impact law wherever in a step an impact falls (doc/Howto_nscd_solver.rst, "Which
 // contacts act: the Signorini rule"), through fix nscd, pair_style nscd's speculative
 // contacts and fix nscd/wall, at the default theta = 1: grains head-on (unit cubes face to
 // face, balls) and a cube dropped flat on a plane wall, frictionless, e = 1, 0.5, 0, the

@@ -12,7 +12,7 @@
    Contributing author: the NSCD package developers
 ------------------------------------------------------------------------- */
 
-// Newton's impact law wherever in a step the impact falls (doc/nscd_solver.md, "Which
+// Newton's impact law wherever in a step the impact falls (doc/Howto_nscd_solver.rst, "Which
 // contacts act: the Signorini rule"). Contacts are in the problem before they touch
 // (speculative, gap > 0), as fix nscd puts them there; an impact then falls at any phase of
 // a step. Each scene is run from 20 initial gaps spread over one step's travel, for
@@ -200,12 +200,12 @@ TEST(Restitution, BoxDroppedOnTheFloorLeavesAtEWhereverTheImpactFallsInTheStep)
 // A box falling at 1 onto a box at rest that hovers above the floor (no gravity, e = 1,
 // both gaps under one step's travel): the falling box's approach is passed on to the lower
 // one, which the floor stops. Newton's law on the approach speeds at the start of each step
-// never counts an impulse twice, so the energy never grows. (Re-imposing a speed
-// remembered from the step in which a gap limited the approach would: the lower box,
-// pushed into the floor, bounces back from it while the upper pair is still made to
-// separate at the remembered speed; 1 + 2 s (1 + s) times the energy for a floor gap closed
-// at speed s, doc/nscd_solver.md.) Prints the share of the energy kept (the gap limit that
-// stops the lower box is inelastic: doc/nscd_solver.md, "What is left").
+// never counts an impulse twice, so the energy never grows. (Re-imposing a speed remembered
+// from the step in which a gap limited the approach would: the lower box, pushed into the
+// floor, bounces back from it while the upper pair is still made to separate at the
+// remembered speed; 1 + 2 s (1 + s) times the energy for a floor gap closed at speed s,
+// doc/Howto_nscd_solver.rst.) Prints the share of the energy kept (the gap limit that stops
+// the lower box is inelastic: doc/Howto_nscd_solver.rst, "What is left").
 TEST(Restitution, ChainOfImpactsThroughTwoGapsNeverGainsEnergy)
 {
   for (const double theta : {1.0, 0.5}) {
