@@ -23,11 +23,18 @@ the LAMMPS tree):
    start/stop, minimize info" (fixes), "Output info" (computes), "Mixing, shift, table, tail
    correction, restart, rRESPA info" (pair styles) or "Restart info" (the others); the other
    .rst pages of doc/ (the package page) are ASCII too;
-2. every pointer to a page of doc/ ("doc/fix_wire.rst", "../../doc/fix_nscd_plate.rst#failure")
+2. every Howto page of the models (the pages named Howto_* in the table of contents captioned
+   "Howto and models", as LAMMPS' doc/src/Howto_*.rst) is reStructuredText, doc/<page>.rst, in
+   ASCII only, titled with a line underlined with '=', and holds no Markdown left over from a
+   conversion (a ``` fence, a [text](page.md) link); the Syntax/Examples layout of a command
+   page does not apply to it. The build, MPI, analysis and dated measurement pages stay Markdown;
+3. every pointer to a page of doc/ ("doc/fix_wire.rst", "../../doc/fix_nscd_plate.rst#failure")
    in src/ lib/ tests/ tools/ examples/ benchmarks/ README.md and doc/ names a page that exists,
-   so a message or comment cannot point to a page that was renamed or removed. The logs of the
-   examples (examples/*/log.*) are left out: they are the record of a run, deck echo included,
-   as LAMMPS' own example logs are.
+   and so does every relative link of a Markdown page of doc/ ("[text](Howto_nscd_units.rst)"),
+   so a message, comment or link cannot point to a page that was renamed or removed (a link to
+   a section of a reStructuredText page goes by the section's label, {ref}`text <label>`:
+   "page.rst#anchor" does not resolve). The logs of the examples (examples/*/log.*) are left
+   out: they are the record of a run, deck echo included, as LAMMPS' own example logs are.
 
 Prints what is wrong and exits 1 if anything is.
 
@@ -47,16 +54,26 @@ RESTART_SECTIONS = {
 POINTER_DIRS = ["src", "lib", "tests", "tools", "examples", "benchmarks", "doc"]
 POINTER_FILES = ["README.md"]
 POINTER = re.compile(r"\bdoc/([A-Za-z0-9_]+\.(?:md|rst))\b")
+RELATIVE_LINK = re.compile(r"\]\(([A-Za-z0-9_]+\.(?:md|rst))(#[^)]*)?\)")
+MARKDOWN_LEFTOVER = re.compile(r"^\s*```|\]\([^)\s]*\.(?:md|rst)(?:#[^)]*)?\)")
 TEXT_SUFFIXES = {".cpp", ".h", ".py", ".sh", ".md", ".rst", ".txt", ".cmake", ""}
 
 
-def command_pages(doc):
+def toctree_pages(doc, caption):
     index = (doc / "index.md").read_text()
     for block in re.findall(r"```\{toctree\}\n(.*?)```", index, re.S):
         lines = [line.strip() for line in block.splitlines() if line.strip()]
-        if ":caption: Commands" in lines:
+        if f":caption: {caption}" in lines:
             return [line for line in lines if not line.startswith(":")]
-    sys.exit(f"{doc / 'index.md'}: no toctree captioned 'Commands'")
+    sys.exit(f"{doc / 'index.md'}: no toctree captioned '{caption}'")
+
+
+def command_pages(doc):
+    return toctree_pages(doc, "Commands")
+
+
+def howto_pages(doc):
+    return [name for name in toctree_pages(doc, "Howto and models") if name.startswith("Howto_")]
 
 
 def sections(text):
@@ -96,6 +113,18 @@ def layout_problems(page):
     return problems
 
 
+def howto_problems(page):
+    """What keeps a Howto page from being ASCII reStructuredText with a title."""
+    problems = non_ascii(page)
+    lines = page.read_bytes().decode("utf-8", "replace").splitlines()
+    found = sections("\n".join(lines))
+    if not found or found[0][1] != "=":
+        problems.append("the title is not underlined with '='")
+    problems += [f"line {number}: Markdown left in the page: {line.strip()[:70]}"
+                 for number, line in enumerate(lines, 1) if MARKDOWN_LEFTOVER.search(line)]
+    return problems
+
+
 def dangling_pointers(repo):
     """file:line: doc/<page> for every pointer to a page of doc/ that does not exist."""
     doc = repo / "doc"
@@ -111,10 +140,17 @@ def dangling_pointers(repo):
             text = path.read_text()
         except (UnicodeDecodeError, OSError):
             continue
+        relative = rel.parts[0] == "doc" and path.suffix == ".md"
         for number, line in enumerate(text.splitlines(), 1):
             for page in POINTER.findall(line):
                 if not (doc / page).is_file():
                     problems.append(f"{rel}:{number}: points to doc/{page}, which does not exist")
+            for page, anchor in RELATIVE_LINK.findall(line) if relative else []:
+                if not (path.parent / page).is_file():
+                    problems.append(f"{rel}:{number}: links {page}, which does not exist")
+                elif anchor and page.endswith(".rst"):
+                    problems.append(f"{rel}:{number}: links {page}{anchor}: a section of a reStructuredText "
+                                    "page is linked by its label, {ref}`text <label>`")
     return problems
 
 
@@ -132,7 +168,17 @@ def main():
             print(f"doc/{name}.rst: {problem}")
         bad += bool(layout_problems(page))
     print(f"{len(pages)} command pages, {bad} not in the layout of a LAMMPS reference page")
-    others = [page for page in sorted(doc.glob("*.rst")) if page.stem not in pages]
+    howtos = howto_pages(doc)
+    bad_howtos = 0
+    for name in howtos:
+        page = doc / f"{name}.rst"
+        problems = howto_problems(page) if page.is_file() else ["missing (Howto pages are reStructuredText)"]
+        for problem in problems:
+            print(f"doc/{name}.rst: {problem}")
+        bad_howtos += bool(problems)
+    print(f"{len(howtos)} Howto pages, {bad_howtos} not ASCII reStructuredText with a title")
+    bad += bad_howtos
+    others = [page for page in sorted(doc.glob("*.rst")) if page.stem not in pages + howtos]
     for page in others:
         for problem in non_ascii(page):
             bad += 1
