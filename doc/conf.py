@@ -11,8 +11,9 @@
 # ----------------------------------------------------------------------
 
 # Sphinx configuration of the package's documentation: the command and style reference pages
-# in reStructuredText as LAMMPS' own manual writes them (doc/*.rst, ASCII only), the model,
-# build and measurement pages in Markdown through MyST (doc/*.md).
+# and the Howto pages of the models (doc/Howto_nscd_*.rst) in reStructuredText as LAMMPS' own
+# manual writes them (doc/*.rst, ASCII only), the build, MPI, analysis and dated measurement
+# pages in Markdown through MyST (doc/*.md).
 # Built by the CTest test docs.sphinx with warnings as errors:
 #   /usr/bin/python3 -m sphinx -W --keep-going -b html doc build/doc-html
 # (Debian: python3-sphinx, python3-myst-parser; tools/build.sh installs them.)
@@ -30,8 +31,11 @@ source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
 exclude_patterns = ["_build"]
 
-# Links to a section of another page (`page.md#a-heading`) resolve through the headings'
-# anchors, as GitHub makes them.
+# Links to a section of another Markdown page (`page.md#a-heading`) resolve through the
+# headings' anchors, as GitHub makes them. Those anchors exist for Markdown headings only: a
+# section of a reStructuredText page (a Howto page) is linked by its label, {ref}`text
+# <label>` from Markdown, :ref:`text <label>` from reStructuredText, the label being the
+# `.. _label:` line before the section.
 myst_heading_anchors = 4
 myst_enable_extensions = ["dollarmath"]
 
