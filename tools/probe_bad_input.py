@@ -520,11 +520,12 @@ def main():
     ap.add_argument("--max-length", type=int, default=MAX_MESSAGE,
                     help="longest message beyond its named values (0: no length check)")
     args = ap.parse_args()
+    lmp = os.path.abspath(args.lmp)     # the cases run in scratch folders: a relative path would miss
     counts, rows, too_long = {}, [], []
     for name, lines, expect, words in CASES:
         if args.only and args.only not in name:
             continue
-        outcome, message, text = run_case(args.lmp, args.ranks, name, lines, expect, words, args.timeout)
+        outcome, message, text = run_case(lmp, args.ranks, name, lines, expect, words, args.timeout)
         counts[outcome] = counts.get(outcome, 0) + 1
         too_long += [(name, excess, long_one)
                      for excess, long_one in long_messages(text, expect, words, args.max_length)]
