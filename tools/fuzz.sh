@@ -41,11 +41,7 @@ for file in "$here"/examples/*/*.shapes; do
   cp "$file" "$seeds/shape_text/$name"
   "$build/tests/fuzz/shape_serialize" "$file" > "$seeds/shape_serial/$name"
 done
-# the example of the format page: the code block of its section 'Example', indented by three
-# spaces (reStructuredText), without the indent and the blank lines around it
-awk '/^Example$/{f=1; next} f && /^\.\. code-block::/{n=1; next} n && /^[^ ]/ && NF{exit}
-     n && !NF{if (s) blank++; next} n{for (; blank > 0; blank--) print ""; s=1; sub(/^   /, ""); print}' \
-  "$here/doc/Howto_nscd_shape_library_format.rst" > "$seeds/shape_text/format_page_example"
+cp "$here/doc/shape_library_example.shapes" "$seeds/shape_text/format_page_example"    # the format page's example
 "$build/tests/fuzz/shape_serialize" "$seeds/shape_text/format_page_example" > "$seeds/shape_serial/format_page_example"
 "$build/tests/fuzz/fuzz_seeds" "$seeds"
 for target in $all_targets; do
