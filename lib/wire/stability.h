@@ -31,7 +31,7 @@
 // k_rot / l^2 * (1, -4, 6, -4, 1): row sum 16 k_rot / l^2; n_c soft contacts per node: row
 // sum at most 2 k_n for an element-element contact split by the lever rule), and the
 // highest damping rate by g_max <= (2 n_c max(gamma_n, gamma_t) + c_node) / m.
-// Until 2026-11 the rule was the sum dt <= 1 / (w_max / 0.313 + g_max / 0.163), which is
+// An earlier version used the sum dt <= 1 / (w_max / 0.313 + g_max / 0.163), which is
 // inside the region but gave 2.3x too many substeps for the papers' wire.
 #pragma once
 

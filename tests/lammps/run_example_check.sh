@@ -33,7 +33,8 @@ case "$name" in
     [ "$polys" -gt 384 ] || { echo "grains.0.vtk has only '$polys' polygons"; exit 1; }
     ! grep -q "ERROR\|Lost atoms" log.lammps
     ;;
-  column)  # a 2-layer column through all five phases: double loops, no wire, closed rings (< 1 min)
+  column)  # a 2-layer column through all five phases: double loops, no wire, closed rings (< 1 min);
+           # and its deposit at another dt
     small=(-var layers 2 -var R 2 -var element 0.3 -var layer_steps 300 -var wire_steps 100
            -var relax_chunk 200 -var relax_max 5 -var wall_speed 0.3 -var wall_travel 0.6
            -var seat_steps 100 -var load_chunk 100 -var load_max 3 -var load_rate 20
@@ -43,6 +44,12 @@ case "$name" in
     "${launch[@]}" "$lmp" -in "$deck" -log log.ring "${small[@]}" -var loop ring -var name ring > screen_ring.txt
     "${launch[@]}" "$lmp" -in "$deck" -log log.prestrain "${small[@]}" -var loop ring -var prestrain 0.01 -var last 1 \
       -var name prestrain > screen_prestrain.txt
+    # -var dt 0.01: the step counts are counted at dt 0.005, so the deposit of 2 x (300 + 100)
+    # steps runs in 2 x (150 + 50) = 400 steps of 0.01, the same time
+    "${launch[@]}" "$lmp" -in "$deck" -log log.dt "${small[@]}" -var settle fixed -var dt 0.01 -var last 1 \
+      -var name dt > screen_dt.txt
+    grep -q "^phase 1 done: .*, step 400$" log.dt ||
+      { echo "column: -var dt 0.01 should run the deposit in 400 steps: $(grep '^phase 1 done' log.dt)"; exit 1; }
     for kind in grains.*.vtk fabric.*.dump pairs.*.dump wire.*.dump nodes.*.dump phase5.restart; do
       ls column.$kind > /dev/null || { echo "column: no column.$kind written"; exit 1; }
     done
