@@ -103,7 +103,7 @@ struct FixNSCD::Solver {
 
 /* fix ID group nscd [theta T] [tolerance TOL] [max_sweeps N] [relaxation W] [check N]
                      [order as_given|shuffled|forward_backward] [seed S] [exchange N] [warn N]
-                     [method gs|nesterov|nncg] [coarse no|yes|C] [overlap_speed V]
+                     [method gs|nesterov|nncg|anderson] [coarse no|yes|C] [overlap_speed V]
                      [interpenetration F] [skip_separating yes|no] [slip_guess yes|no] [write_problem STEP FILE] */
 FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), solver(std::make_unique<Solver>()), exchange_every(1), warn_every(1000),
@@ -193,8 +193,9 @@ bool FixNSCD::set_option(const std::string &key, const char *value)
     if (method == "gs") solver->options.acceleration = nscd::Acceleration::none;
     else if (method == "nesterov") solver->options.acceleration = nscd::Acceleration::nesterov;
     else if (method == "nncg") solver->options.acceleration = nscd::Acceleration::nncg;
+    else if (method == "anderson") solver->options.acceleration = nscd::Acceleration::anderson;
     else
-      error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov or nncg)", method);
+      error->all(FLERR, "fix nscd: unknown method '{}' (expected gs, nesterov, nncg or anderson)", method);
   } else if (key == "coarse") {
     solver->options.coarse_cell = coarse_cell_of(value, lmp);
   } else if (key == "skip_separating") {

@@ -17,8 +17,8 @@
 // residual at every check split by height (grain-grain | boundary contacts), to see where
 // a hard step's error sits. doc/Howto_nscd_solver.rst, "Replaying a step".
 //
-//   replay_problem FILE [--method gs|nesterov|nncg] [--tolerance T] [--check N]
-//                  [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W]
+//   replay_problem FILE [--method gs|nesterov|nncg|anderson] [--tolerance T] [--check N]
+//                  [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W] [--memory M]
 //                  [--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS]
 //                  [--worst N]
 // Defaults are fix nscd's (nesterov, 1e-4, 4, 1000, skip no, no coarse).
@@ -41,8 +41,8 @@ namespace {
 
 [[noreturn]] void usage(const std::string &why)
 {
-  std::fprintf(stderr, "replay_problem: %s\nusage: replay_problem FILE [--method gs|nesterov|nncg] "
-               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W] "
+  std::fprintf(stderr, "replay_problem: %s\nusage: replay_problem FILE [--method gs|nesterov|nncg|anderson] "
+               "[--tolerance T] [--check N] [--max-sweeps N] [--skip yes|no] [--slip-guess yes|no] [--coarse C] [--relaxation W] [--memory M] "
                "[--order as_given|shuffled|forward_backward] [--repeat N] [--where BINS] [--worst N]\n", why.c_str());
   std::exit(2);
 }
@@ -146,6 +146,7 @@ int main(int argc, char **argv)
       if (value == "gs") options.acceleration = Acceleration::none;
       else if (value == "nesterov") options.acceleration = Acceleration::nesterov;
       else if (value == "nncg") options.acceleration = Acceleration::nncg;
+      else if (value == "anderson") options.acceleration = Acceleration::anderson;
       else usage("unknown method " + value);
     } else if (key == "--tolerance") options.tolerance = std::atof(value.c_str());
     else if (key == "--check") options.check_every = std::atoi(value.c_str());
@@ -154,6 +155,7 @@ int main(int argc, char **argv)
     else if (key == "--slip-guess") options.slip_guess = value == "yes";
     else if (key == "--coarse") options.coarse_cell = std::atof(value.c_str());
     else if (key == "--relaxation") options.relaxation = std::atof(value.c_str());
+    else if (key == "--memory") options.anderson_memory = std::atoi(value.c_str());
     else if (key == "--order") {
       if (value == "as_given") options.order = SweepOrder::as_given;
       else if (value == "shuffled") options.order = SweepOrder::shuffled;

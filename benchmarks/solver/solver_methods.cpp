@@ -83,6 +83,10 @@ std::vector<Method> all_methods()
          o.acceleration = Acceleration::nesterov;
          o.check_every = 4;
        }},
+      {"anderson/check4", [](SolverOptions &o) {
+         o.acceleration = Acceleration::anderson;
+         o.check_every = 4;
+       }},
       {"nesterov+coarse/check4", [](SolverOptions &o) {
          o.acceleration = Acceleration::nesterov;
          o.coarse_cell = 2.0;
@@ -111,7 +115,7 @@ void trace_solve(GrainScene &scene, const SolverOptions &options)
   for (int sweep = 0; sweep <= trace_sweeps; ++sweep) {
     if (sweep > 0) {
       problem.sweep();
-      problem.accelerate(problem.sweep_change());
+      problem.accelerate(problem.acceleration_terms());
     }
     const ResidualTerms terms = problem.residual_terms();
     double after = 0.0;

@@ -27,6 +27,11 @@
 namespace nscd {
 namespace {
 
+// Anderson mixing's small systems, on the stack (no allocation per sweep).
+constexpr int kMaxMemory = SolverOptions::kMaxAndersonMemory;
+using AndersonMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxMemory, kMaxMemory>;
+using AndersonVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxMemory, 1>;
+
 // Velocity errors below this fraction of a contact's own velocities are round-off.
 constexpr double kRoundOffVelocity = 1e-12;
 
@@ -164,6 +169,9 @@ void SolverOptions::validate() const
     throw SolverError("coarse_patience = " + std::to_string(coarse_patience) +
                       " must be >= 1 (sweeps without a new best residual before the coarse "
                       "correction is dropped)");
+  if (anderson_memory < 1 || anderson_memory > kMaxAndersonMemory)
+    throw SolverError("anderson_memory = " + std::to_string(anderson_memory) + " must lie in [1, " +
+                      std::to_string(kMaxAndersonMemory) + "] (sweeps Anderson mixing combines)");
   if (check_every < 1)
     throw SolverError("check_every = " + std::to_string(check_every) +
                       " must be >= 1 (1 = residual after every sweep)");
@@ -207,6 +215,20 @@ void ContactProblem::prepare(const SolverOptions &options)
   sweep_change_ = 0.0;
   previous_change_ = 0.0;
   momentum_steps_ = 0;
+  if (options.acceleration == Acceleration::anderson) {
+    const std::size_t n = 3 * contacts.size();
+    const auto m = static_cast<std::size_t>(options.anderson_memory);
+    anderson_dg_.resize(m * n);
+    anderson_df_.resize(m * n);
+    anderson_g_.resize(n);
+    anderson_f_.resize(n);
+    anderson_gram_.setZero(options.anderson_memory, options.anderson_memory);
+  }
+  anderson_has_last_ = false;
+  anderson_count_ = 0;
+  anderson_last_change_ = 0.0;
+  terms_sweep_ = -1;
+  acceleration_terms_.clear();
 
   // Kinematics use the start-of-step velocities (u_n^- enters the active-contact rule),
   // so rows are built before the external impulses are added.
@@ -432,22 +454,38 @@ void ContactProblem::sweep()
   ++sweeps_done_;
 }
 
-void ContactProblem::accelerate(double global_sweep_change)
+const std::vector<double> &ContactProblem::acceleration_terms()
+{
+  // Once per sweep: Anderson stores the sweep in its memory (a second call returns the same).
+  if (terms_sweep_ == sweeps_done_) return acceleration_terms_;
+  terms_sweep_ = sweeps_done_;
+  acceleration_terms_.clear();
+  if (options_.acceleration == Acceleration::nncg) acceleration_terms_.push_back(sweep_change_);
+  if (options_.acceleration == Acceleration::anderson) store_anderson_sweep();
+  return acceleration_terms_;
+}
+
+void ContactProblem::accelerate(const std::vector<double> &global_terms)
 {
   double beta = 0.0;
   switch (options_.acceleration) {
   case Acceleration::none:
     return;
+  case Acceleration::anderson:
+    mix_anderson(global_terms);
+    return;
   case Acceleration::nesterov:
     beta = momentum_steps_ > 0 ? (momentum_steps_ - 1.0) / (momentum_steps_ + 2.0) : 0.0;
     ++momentum_steps_;
     break;
-  case Acceleration::nncg:
+  case Acceleration::nncg: {
     // Fletcher-Reeves; a growing sweep change (beta > 1) restarts.
-    beta = previous_change_ > 0.0 ? global_sweep_change / previous_change_ : 0.0;
+    const double change = global_terms.empty() ? 0.0 : global_terms[0];
+    beta = previous_change_ > 0.0 ? change / previous_change_ : 0.0;
     if (!(beta <= 1.0)) beta = 0.0;
-    previous_change_ = global_sweep_change;
+    previous_change_ = change;
     break;
+  }
   }
   for (Row &row : rows_) {
     if (row.inert) continue;
@@ -464,8 +502,102 @@ void ContactProblem::accelerate(double global_sweep_change)
   }
 }
 
+// Anderson mixing treats a sweep as a map g = G(x) of all impulses x, with the residual f =
+// g - x (the sweep's impulse changes, Row::step). This stores the sweep just done: its g
+// and f, and in the next slot of the ring their changes since the previous sweep, dg and
+// df; then the terms mix_anderson() needs, summed over ranks: |f|^2, df_new . df_s and
+// df_s . f for every filled slot s.
+void ContactProblem::store_anderson_sweep()
+{
+  const std::size_t n = 3 * rows_.size();
+  const int memory = options_.anderson_memory;
+  double change = 0.0;
+  for (const Row &row : rows_) change += row.step.squaredNorm();
+  acceleration_terms_.push_back(change);
+  const bool difference = anderson_has_last_;
+  if (difference) {
+    anderson_slot_ = anderson_count_ < memory ? anderson_count_ : (anderson_slot_ + 1) % memory;
+    anderson_count_ = std::min(anderson_count_ + 1, memory);
+  }
+  double *dg = &anderson_dg_[anderson_slot_ * n];
+  double *df = &anderson_df_[anderson_slot_ * n];
+  for (std::size_t c = 0; c < rows_.size(); ++c)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t i = 3 * c + k;
+      if (difference) {
+        dg[i] = rows_[c].impulse[k] - anderson_g_[i];
+        df[i] = rows_[c].step[k] - anderson_f_[i];
+      }
+      anderson_g_[i] = rows_[c].impulse[k];
+      anderson_f_[i] = rows_[c].step[k];
+    }
+  anderson_has_last_ = true;
+  if (!difference) return;
+  // Every slot's df against the new df and against f: two products of the slots' matrix
+  // (n x count, column s = slot s) with a vector (vectorised, unlike a plain loop).
+  const auto rows = static_cast<Eigen::Index>(n);
+  const Eigen::Map<const Eigen::MatrixXd> slots(anderson_df_.data(), rows, anderson_count_);
+  AndersonMatrix products(anderson_count_, 2);
+  products.col(0).noalias() = slots.transpose() * Eigen::Map<const Eigen::VectorXd>(df, rows);
+  products.col(1).noalias() = slots.transpose() * Eigen::Map<const Eigen::VectorXd>(anderson_f_.data(), rows);
+  for (int s = 0; s < anderson_count_; ++s) {
+    acceleration_terms_.push_back(products(s, 0));
+    acceleration_terms_.push_back(products(s, 1));
+  }
+}
+
+// x = g - sum_s gamma_s dg_s, gamma minimising |f - sum_s gamma_s df_s| (Tikhonov-regularised
+// normal equations, the Gram matrix of every rank's contacts), each impulse projected onto
+// its cone. A sweep whose change grew empties the memory instead: the mixing made things
+// worse, so the sweeps go on alone until there is a new history.
+void ContactProblem::mix_anderson(const std::vector<double> &global_terms)
+{
+  if (global_terms.empty()) return;
+  const double change = global_terms[0];
+  const bool grew = anderson_last_change_ > 0.0 && change > anderson_last_change_;
+  anderson_last_change_ = change;
+  if (grew) {
+    anderson_count_ = 0;
+    return;
+  }
+  const int count = anderson_count_;
+  if (count == 0 || static_cast<int>(global_terms.size()) != 1 + 2 * count) return;
+  AndersonVector projection(count);
+  for (int s = 0; s < count; ++s) {
+    anderson_gram_(anderson_slot_, s) = anderson_gram_(s, anderson_slot_) = global_terms[1 + 2 * s];
+    projection[s] = global_terms[2 + 2 * s];
+  }
+  AndersonMatrix gram(count, count);
+  double trace = 0.0;
+  for (int a = 0; a < count; ++a) {
+    for (int b = 0; b < count; ++b) gram(a, b) = anderson_gram_(a, b);
+    trace += gram(a, a);
+  }
+  if (!(trace > 0.0)) return;
+  // The sweeps' changes become nearly parallel as they converge: a small multiple of the
+  // trace on the diagonal keeps the least-squares problem solvable without changing gamma
+  // where it is well posed.
+  for (int a = 0; a < count; ++a) gram(a, a) += 1e-10 * trace;
+  const AndersonVector gamma = gram.ldlt().solve(projection);
+  if (!gamma.allFinite()) return;
+  const auto n = static_cast<Eigen::Index>(3 * rows_.size());
+  anderson_mix_.noalias() = Eigen::Map<const Eigen::MatrixXd>(anderson_dg_.data(), n, count) * gamma;
+  for (std::size_t c = 0; c < rows_.size(); ++c) {
+    Row &row = rows_[c];
+    if (row.inert) continue;
+    const Vec3 mixed = row.impulse - anderson_mix_.segment<3>(static_cast<Eigen::Index>(3 * c));
+    if (mixed == row.impulse) continue;    // open and untouched by every remembered sweep
+    const Vec3 target = project_on_coulomb_cone(mixed, row.mu);
+    apply_impulse_change(row, target - row.impulse);
+    row.impulse = target;
+  }
+}
+
 void ContactProblem::restart_acceleration()
 {
+  anderson_has_last_ = false;
+  anderson_count_ = 0;
+  anderson_last_change_ = 0.0;
   momentum_steps_ = 0;
   previous_change_ = 0.0;
   for (Row &row : rows_) row.direction.setZero();
@@ -615,11 +747,11 @@ SolveReport iterate(ContactProblem &problem, const SolverOptions &options,
   const auto exchange = [&]() {
     if (communication.exchange) communication.exchange(problem);
   };
-  const auto global_change = [&]() {
-    double change = problem.sweep_change();
-    if (communication.sum && options.acceleration == Acceleration::nncg)
-      communication.sum(&change, 1);
-    return change;
+  std::vector<double> terms;
+  const auto global_terms = [&]() -> const std::vector<double> & {
+    terms = problem.acceleration_terms();
+    if (communication.sum && !terms.empty()) communication.sum(terms.data(), static_cast<int>(terms.size()));
+    return terms;
   };
   const int exchange_every = std::max(1, communication.exchange_every);
   exchange();
@@ -643,7 +775,7 @@ SolveReport iterate(ContactProblem &problem, const SolverOptions &options,
     for (;;) {
       problem.sweep();
       ++sweeps;
-      problem.accelerate(global_change());
+      problem.accelerate(global_terms());
       const bool check = sweeps % options.check_every == 0 || sweeps == options.max_sweeps;
       if (check || sweeps % exchange_every == 0) exchange();
       if (check) break;
@@ -667,7 +799,9 @@ std::size_t ContactProblem::memory_bytes() const
 {
   return capacity_bytes(bodies) + capacity_bytes(contacts) + capacity_bytes(rows_) + capacity_bytes(group_) +
       capacity_bytes(remembered_) + capacity_bytes(order_) + capacity_bytes(swept_) + capacity_bytes(synced_velocity_) +
-      capacity_bytes(synced_angular_velocity_);
+      capacity_bytes(synced_angular_velocity_) + capacity_bytes(acceleration_terms_) + capacity_bytes(anderson_dg_) +
+      capacity_bytes(anderson_df_) + capacity_bytes(anderson_g_) + capacity_bytes(anderson_f_) +
+      sizeof(double) * static_cast<std::size_t>(anderson_gram_.size() + anderson_mix_.size());
 }
 
 }    // namespace nscd

@@ -133,6 +133,11 @@ enum class Acceleration : unsigned char {
                // Fletcher-Reeves beta = |dP_k|^2 / |dP_k-1|^2 from the sweeps' impulse
                // changes (one global sum per sweep), restarts when beta > 1 or the
                // residual grew
+  anderson,    // Anderson mixing (Walker and Ni 2011) of the last anderson_memory sweeps:
+               // the impulses become the combination of the sweeps' results whose
+               // impulse changes cancel best (least squares), projected onto the cones.
+               // One global sum of 2 m + 1 numbers per sweep; restarts when a sweep's
+               // change grew or the residual grew
 };
 
 struct SolverOptions {
@@ -166,6 +171,9 @@ struct SolverOptions {
   // kinetic energy (at most m V^2 / 2 per grain and step), so keep V small.
   double overlap_speed = 0.0;
   Acceleration acceleration = Acceleration::none;
+  // Sweeps Acceleration::anderson combines (its memory m), 1 to kMaxAndersonMemory.
+  int anderson_memory = 5;
+  static constexpr int kMaxAndersonMemory = 32;
   // Coarse correction (doc/Howto_nscd_solver.rst, "Coarse correction"): the contacts of
   // this rank are grouped into cubic cells of coarse_cell grain sizes (a grain size = twice
   // the mean lever arm of the contacts); each group's normal impulses are scaled and
@@ -262,16 +270,20 @@ class ContactProblem {
   void contact_residuals(std::vector<double> &error, std::vector<double> &scale) const;
 
   // This problem's part of the squared size of the last sweep's impulse change, the sum
-  // over its contacts of |dP|^2 (impulse units, local frame). Only Acceleration::nncg
-  // needs it, summed over ranks.
+  // over its contacts of |dP|^2 (impulse units, local frame).
   double sweep_change() const { return sweep_change_; }
-  // The momentum step of options.acceleration after a sweep, on this problem's contacts
-  // (the same call on every rank): each impulse moves on by beta times its change since
-  // the previous sweep, projected onto its cone, and the bodies' velocities follow (ghosts
-  // send the change at the next exchange, as after a sweep). global_sweep_change is the
-  // sum over ranks of sweep_change() (read only by nncg). Does nothing without
-  // acceleration.
-  void accelerate(double global_sweep_change = 0.0);
+  // After each sweep: this problem's part of the sums over ranks that accelerate()
+  // needs, to be summed element-wise over ranks (empty for none and nesterov; nncg:
+  // sweep_change(); anderson: 2 m + 1 dot products of this sweep's and the remembered
+  // sweeps' impulse changes, after storing this sweep in the memory).
+  const std::vector<double> &acceleration_terms();
+  // The step of options.acceleration after a sweep, on this problem's contacts (the same
+  // call on every rank, with acceleration_terms() summed over ranks): momentum moves each
+  // impulse on by beta times its change since the previous sweep, Anderson mixing
+  // replaces it by the best combination of the remembered sweeps' results; each impulse is
+  // projected onto its cone and the bodies' velocities follow (ghosts send the change at
+  // the next exchange, as after a sweep). Does nothing without acceleration.
+  void accelerate(const std::vector<double> &global_terms = {});
   // Start the momentum again from zero (when the residual grew, or after a jump of the
   // impulses that was not a sweep).
   void restart_acceleration();
@@ -333,6 +345,9 @@ class ContactProblem {
   void build_groups();
   int group_contacts_by_cell(double size);    // fills group_, returns the group count
 
+  void store_anderson_sweep();
+  void mix_anderson(const std::vector<double> &global_terms);
+
   std::vector<Row> rows_;
   std::vector<int> group_;          // coarse group of each contact
   int group_count_ = 0;
@@ -347,6 +362,19 @@ class ContactProblem {
   double sweep_change_ = 0.0;
   double previous_change_ = 0.0;    // nncg: global sweep change of the previous step
   int momentum_steps_ = 0;          // accelerate() calls since the last restart
+  std::vector<double> acceleration_terms_;
+  int terms_sweep_ = -1;            // the sweep acceleration_terms_ belong to
+  // Anderson mixing: per remembered sweep (a ring of anderson_memory slots), the change
+  // between consecutive sweeps of the swept impulses (dg) and of their impulse changes
+  // (df), 3 numbers per contact; the last sweep's impulses and changes; the Gram matrix of
+  // the df slots (summed over ranks).
+  std::vector<double> anderson_dg_, anderson_df_, anderson_g_, anderson_f_;
+  Eigen::MatrixXd anderson_gram_;
+  Eigen::VectorXd anderson_mix_;    // sum_s gamma_s dg_s
+  bool anderson_has_last_ = false;
+  int anderson_count_ = 0;          // slots filled since the last restart
+  int anderson_slot_ = 0;           // the slot this sweep wrote
+  double anderson_last_change_ = 0.0;    // global |f|^2 of the previous sweep
 };
 
 // The decisions of the iteration that depend on the global residual only, so that every

@@ -43,6 +43,7 @@ struct Method {
 const std::vector<Method> kAccelerated = {
     {"nesterov", Acceleration::nesterov, 0.0},
     {"nncg", Acceleration::nncg, 0.0},
+    {"anderson", Acceleration::anderson, 0.0},
     {"coarse", Acceleration::none, 2.0},
     {"coarse (cell 1)", Acceleration::none, 1.0},
     {"nesterov+coarse", Acceleration::nesterov, 2.0},
@@ -169,12 +170,12 @@ TEST(Acceleration, VelocitiesStayThoseOfTheImpulses)
       if (sweep == 10) problem.remember_impulses();
       if (sweep % 7 == 3 && method.coarse_cell > 0.0) problem.coarse_correction();
       problem.sweep();
-      problem.accelerate(problem.sweep_change());
+      problem.accelerate(problem.acceleration_terms());
     }
     problem.restore_remembered_impulses();
     for (int sweep = 0; sweep < 5; ++sweep) {
       problem.sweep();
-      problem.accelerate(problem.sweep_change());
+      problem.accelerate(problem.acceleration_terms());
     }
     problem.finish();
     const std::vector<Vec3> expected = velocities_from_impulses(unsolved, problem);
@@ -188,18 +189,60 @@ TEST(Acceleration, VelocitiesStayThoseOfTheImpulses)
 
 TEST(Acceleration, MomentumStepsStayInsideTheCones)
 {
-  ContactProblem problem = brick_pyramid(5, 0.3, 1e-3);
-  SolverOptions options = options_for({"nesterov", Acceleration::nesterov, 0.0});
-  problem.prepare(options);
-  for (int sweep = 0; sweep < 40; ++sweep) {
-    problem.sweep();
-    problem.accelerate();
-    problem.finish();
-    for (const Contact &c : problem.contacts) {
-      const double normal = c.impulse.dot(c.normal);
-      ASSERT_GE(normal, 0.0);
-      ASSERT_LE((c.impulse - normal * c.normal).norm(), c.friction * normal * (1.0 + 1e-12) + 1e-300);
+  // Momentum and Anderson mixing both move impulses beyond the sweeps' local solutions.
+  for (const Acceleration acceleration : {Acceleration::nesterov, Acceleration::anderson}) {
+    ContactProblem problem = brick_pyramid(5, 0.3, 1e-3);
+    problem.prepare(options_for({"", acceleration, 0.0}));
+    for (int sweep = 0; sweep < 40; ++sweep) {
+      problem.sweep();
+      problem.accelerate(problem.acceleration_terms());
+      problem.finish();
+      for (const Contact &c : problem.contacts) {
+        const double normal = c.impulse.dot(c.normal);
+        ASSERT_GE(normal, 0.0);
+        ASSERT_LE((c.impulse - normal * c.normal).norm(), c.friction * normal * (1.0 + 1e-12) + 1e-300);
+      }
     }
+  }
+}
+
+TEST(Acceleration, AndersonEmptiesItsMemoryWhenASweepsChangeGrows)
+{
+  // The mixing step uses the remembered sweeps only while each sweep changes the impulses
+  // less than the one before: given a larger change it leaves the impulses as the sweep
+  // left them, given a smaller one it moves them.
+  ContactProblem problem = brick_pyramid(4, 0.5, 1e-3);
+  problem.prepare(options_for({"anderson", Acceleration::anderson, 0.0}));
+  const auto velocities = [&problem]() {
+    std::vector<Vec3> v;
+    for (const SolverBody &b : problem.bodies) v.push_back(b.velocity);
+    return v;
+  };
+  problem.sweep();
+  EXPECT_EQ(problem.acceleration_terms().size(), 1u);    // |f|^2 only: nothing to mix yet
+  problem.accelerate(problem.acceleration_terms());       // the same terms: once per sweep
+  problem.sweep();
+  std::vector<double> terms = problem.acceleration_terms();
+  ASSERT_EQ(terms.size(), 3u);    // |f|^2, the new slot's Gram entry, its projection on f
+  std::vector<Vec3> before = velocities();
+  std::vector<double> grown = terms;
+  grown[0] = 1e300;
+  ContactProblem copy = problem;
+  copy.accelerate(grown);
+  for (std::size_t b = 0; b < before.size(); ++b) EXPECT_EQ(copy.bodies[b].velocity, before[b]);
+  problem.accelerate(terms);
+  double moved = 0.0;
+  for (std::size_t b = 0; b < before.size(); ++b)
+    moved = std::max(moved, (problem.bodies[b].velocity - before[b]).norm());
+  EXPECT_GT(moved, 0.0);
+}
+
+TEST(Acceleration, BadAndersonMemoryIsRejected)
+{
+  for (const int memory : {0, SolverOptions::kMaxAndersonMemory + 1}) {
+    SolverOptions options = options_for({"anderson", Acceleration::anderson, 0.0});
+    options.anderson_memory = memory;
+    EXPECT_THROW(options.validate(), SolverError) << memory;
   }
 }
 
@@ -222,15 +265,22 @@ TEST(Acceleration, FewerSweepsThanGaussSeidelWhereItIsSlow)
   const int gs = sweeps(towers, Acceleration::none, 0.0);
   const int nesterov = sweeps(towers, Acceleration::nesterov, 0.0);
   const int nncg = sweeps(towers, Acceleration::nncg, 0.0);
+  const int anderson = sweeps(towers, Acceleration::anderson, 0.0);
   const ContactProblem column = sphere_column_under_plate(20, 1000.0, 1.0, 1e-3);
   const int column_gs = sweeps(column, Acceleration::none, 0.0);
   const int column_coarse = sweeps(column, Acceleration::none, 1.0);
+  const int column_nesterov = sweeps(column, Acceleration::nesterov, 0.0);
+  const int column_anderson = sweeps(column, Acceleration::anderson, 0.0);
   std::cout << "[ info ] 20-box tower to 1e-6, cold: gs " << gs << ", nesterov " << nesterov
-            << ", nncg " << nncg << " sweeps; column of 20 spheres under a plate x1000: gs "
-            << column_gs << ", coarse " << column_coarse << " sweeps\n";
+            << ", nncg " << nncg << ", anderson " << anderson
+            << " sweeps; column of 20 spheres under a plate x1000: gs " << column_gs << ", coarse "
+            << column_coarse << ", nesterov " << column_nesterov << ", anderson " << column_anderson
+            << " sweeps\n";
   EXPECT_LT(3 * nesterov, gs);
   EXPECT_LT(2 * nncg, gs);
   EXPECT_LT(100 * column_coarse, column_gs);
+  EXPECT_LT(3 * anderson, gs);
+  EXPECT_LT(100 * column_anderson, column_gs);
 }
 
 TEST(Acceleration, CoarseCorrectionSolvesAStraightColumnInAFewSweeps)
@@ -315,15 +365,15 @@ TEST(Acceleration, NncgRestartsWhenTheSweepChangeGrows)
   ContactProblem problem = brick_pyramid(4, 0.5, 1e-3);
   problem.prepare(options_for({"nncg", Acceleration::nncg, 0.0}));
   problem.sweep();
-  problem.accelerate(1.0);    // first step: no direction yet
+  problem.accelerate({1.0});  // first step: no direction yet
   problem.sweep();
   std::vector<Vec3> before;
   for (const SolverBody &b : problem.bodies) before.push_back(b.velocity);
-  problem.accelerate(2.0);    // beta = 2 > 1: restart, nothing moves
+  problem.accelerate({2.0});  // beta = 2 > 1: restart, nothing moves
   for (std::size_t b = 0; b < before.size(); ++b)
     EXPECT_EQ(problem.bodies[b].velocity, before[b]);
   problem.sweep();
-  problem.accelerate(1.0);    // beta = 1/2: moves
+  problem.accelerate({1.0});  // beta = 1/2: moves
   double moved = 0.0;
   for (std::size_t b = 0; b < before.size(); ++b)
     moved = std::max(moved, (problem.bodies[b].velocity - before[b]).norm());

@@ -111,12 +111,14 @@ Emulated solve_on_ranks(const ContactProblem &whole, const std::vector<int> &own
       if (step.coarse) rank.coarse_correction();
     }
     do {
-      double change = 0.0;    // the global sum nncg needs
+      std::vector<double> terms;    // the global sums nncg and anderson need
       for (ContactProblem &rank : run.ranks) {
         rank.sweep();
-        change += rank.sweep_change();
+        const std::vector<double> &mine = rank.acceleration_terms();
+        terms.resize(mine.size(), 0.0);
+        for (std::size_t t = 0; t < mine.size(); ++t) terms[t] += mine[t];
       }
-      for (ContactProblem &rank : run.ranks) rank.accelerate(change);
+      for (ContactProblem &rank : run.ranks) rank.accelerate(terms);
       exchange(run.ranks);
       ++sweeps;
     } while (sweeps % options.check_every != 0 && sweeps < options.max_sweeps);
@@ -185,6 +187,7 @@ TEST(EmulatedRanks, PyramidOnTwoAndFourRanksMatchesOneRank)
   for (const Method &method : {Method{"gs", Acceleration::none, 0.0},
                                Method{"nesterov", Acceleration::nesterov, 0.0},
                                Method{"nncg", Acceleration::nncg, 0.0},
+                               Method{"anderson", Acceleration::anderson, 0.0},
                                Method{"coarse", Acceleration::none, 2.0},
                                Method{"nesterov+coarse", Acceleration::nesterov, 2.0}}) {
     std::string line = "[ info ] pyramid, " + method.name + ", sweeps to 1e-9 on 1/2/4 ranks:";
@@ -225,6 +228,7 @@ TEST(EmulatedRanks, ColumnUnderAHeavyPlateCutIntoFourBands)
   std::vector<int> owner;
   for (int b = 0; b <= layers; ++b) owner.push_back(std::min(3, b / 6));
   for (const Method &method : {Method{"nesterov", Acceleration::nesterov, 0.0},
+                               Method{"anderson", Acceleration::anderson, 0.0},
                                Method{"nesterov+coarse/8", Acceleration::nesterov, 1.0, 8}}) {
     const Emulated one = solve_on_ranks(whole, std::vector<int>(layers + 1, 0), 1,
                                         options_for(method, tolerance));
