@@ -511,9 +511,7 @@ void ContactProblem::store_anderson_sweep()
 {
   const std::size_t n = 3 * rows_.size();
   const int memory = options_.anderson_memory;
-  double change = 0.0;
-  for (const Row &row : rows_) change += row.step.squaredNorm();
-  acceleration_terms_.push_back(change);
+  acceleration_terms_.push_back(sweep_change_);    // |f|^2, summed by relax()
   const bool difference = anderson_has_last_;
   if (difference) {
     anderson_slot_ = anderson_count_ < memory ? anderson_count_ : (anderson_slot_ + 1) % memory;

@@ -29,7 +29,7 @@
 //     decide (SolveControl): stop, remember/restore impulses, coarse correction, restart
 //     problem.skip_separating_contacts();           // at a check, if options.skip_separating
 //     problem.sweep();                              // one pass over the local contacts
-//     problem.accelerate(sum(problem.sweep_change()));    // if options.acceleration
+//     problem.accelerate(sum(problem.acceleration_terms()));    // if options.acceleration
 //     exchange();                                   // every exchange_every sweeps and before a check
 //   } until converged or max_sweeps;
 //   problem.finish();                               // impulses back into contacts
