@@ -22,6 +22,13 @@
 #   benchmarks/column/accuracy.sh                  # settings below, seeds 1 2 3, 6 layers
 #   SEEDS="1 2 3 4" LAYERS=8 JOBS=2 benchmarks/column/accuracy.sh
 #   SETTINGS="today new" benchmarks/column/accuracy.sh
+#   SCENE=small SETTINGS="new fast" CROSS="new fast" SEEDS="2026 2027 2028" JOBS=1 benchmarks/column/accuracy.sh
+#
+# SCENE: papers (the default: the papers' layers as above) or small (tools/run_example.sh's
+# column, 5 layers of R 2.5, loaded to 400 unless it fails first: the README's numbers).
+# CROSS="A B": then also phase 5 alone from each seed's phase-4 restart of A loaded with B's
+# options and of B with A's (logs A-then-B.SEED.log): whether a setting's failure load comes
+# from the column it built or from the loading.
 #
 # Settings (each a set of -var's on top of the common ones):
 #   today      the substeps and fixed phases of main before 26 Nov 2026 (substeps 247, settle fixed)
@@ -33,7 +40,8 @@
 #   settle     phases ending at rest only (substeps 247): the state-based phases alone
 #   inertia10  the defaults with fix wire inertia 10
 #   dt01       the defaults with an NSCD step of 0.01 (twice the deck's)
-# Writes benchmarks/column/work/accuracy/<setting>.<seed>.log and accuracy.csv.
+# Writes benchmarks/column/work/accuracy/<setting>.<seed>.log and accuracy.csv (SCENE small:
+# work/accuracy.small/).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 lmp=${LMP:-$here/../../build/lmp}
@@ -41,13 +49,22 @@ seeds=${SEEDS:-1 2 3}
 layers=${LAYERS:-6}
 jobs=${JOBS:-2}
 settings=${SETTINGS:-today new inertia10}
+scene=${SCENE:-papers}
+cross=${CROSS:-}
 work=${WORK:-$here/work/accuracy}
+[ "$scene" = papers ] || work=${WORK:-$here/work/accuracy.$scene}
 mkdir -p "$work"
 cd "$work"
 # LAMMPS reads its input as it goes (and again at every jump): the runs read a copy
 cp "$here/../../examples/column/in.column" in.column
-common=(-var layers "$layers" -var R 3 -var cells 2 -var layer_steps 800 -var wire_steps 200 -var relax_max 10
-        -var load_rate 10 -var load_max 10 -var dump_every 1000000 -var thermo_every 100)
+case $scene in
+  papers) common=(-var layers "$layers" -var R 3 -var cells 2 -var layer_steps 800 -var wire_steps 200 -var relax_max 10
+                  -var load_rate 10 -var load_max 10 -var dump_every 1000000 -var thermo_every 100) ;;
+  small) # shellcheck source=SCRIPTDIR/../../tools/small_column.sh
+         source "$here/../../tools/small_column.sh"    # the README's column: small_column
+         common=("${small_column[@]}" -var dump_every 1000000) ;;
+  *) echo "accuracy.sh: SCENE $scene: use papers or small" >&2; exit 1 ;;
+esac
 options_of() {
   case $1 in
     today) echo "-var substeps 247 -var settle fixed" ;;
@@ -61,20 +78,40 @@ options_of() {
     *) echo "accuracy.sh: unknown setting $1" >&2; exit 1 ;;
   esac
 }
-run_one() {    # setting seed
-  local options
-  options=$(options_of "$1")
-  # shellcheck disable=SC2086
-  /usr/bin/time -f "%e s wall, %U s user" -o "$1.$2.time" nice -n 5 "$lmp" -in in.column \
-    -log "$1.$2.log" -screen none -var name "$1.$2" -var seed "$2" "${common[@]}" $options > /dev/null 2>&1 \
-    || echo "accuracy.sh: $1 seed $2 failed (see $work/$1.$2.log)" >&2
+run_one() {    # name seed options...
+  local name=$1 seed=$2
+  shift 2
+  /usr/bin/time -f "%e s wall, %U s user" -o "$name.$seed.time" nice -n 5 "$lmp" -in in.column \
+    -log "$name.$seed.log" -screen none -var name "$name.$seed" -var seed "$seed" "${common[@]}" "$@" > /dev/null 2>&1 \
+    || echo "accuracy.sh: $name seed $seed failed (see $work/$name.$seed.log)" >&2
+}
+queue() {      # name seed options...: run in the background once fewer than JOBS run; skip if done
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do sleep 5; done
+  grep -q "s user" "$1.$2.time" 2>/dev/null && return    # done before: kept
+  run_one "$@" &
 }
 for setting in $settings; do
   for seed in $seeds; do
-    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do sleep 5; done
-    grep -q "s user" "$setting.$seed.time" 2>/dev/null && continue    # done before: kept
-    run_one "$setting" "$seed" &
+    # shellcheck disable=SC2046
+    queue "$setting" "$seed" $(options_of "$setting")
   done
 done
 wait
-/usr/bin/python3 "$here/accuracy.py" --work "$work" --settings $settings --seeds $seeds --csv accuracy.csv
+crossed=()
+if [ -n "$cross" ]; then
+  read -r a b <<< "$cross"
+  [ -n "$b" ] || { echo "accuracy.sh: CROSS '$cross': give two settings" >&2; exit 1; }
+  for pair in "$a $b" "$b $a"; do
+    read -r built loaded <<< "$pair"
+    crossed+=("$built-then-$loaded")
+    for seed in $seeds; do
+      # the deck reads NAME.phase4.restart for -var start 5: the built column under the new name
+      ln -sf "$built.$seed.phase4.restart" "$built-then-$loaded.$seed.phase4.restart"
+      # shellcheck disable=SC2046
+      queue "$built-then-$loaded" "$seed" -var start 5 $(options_of "$loaded")
+    done
+  done
+  wait
+fi
+# shellcheck disable=SC2086
+/usr/bin/python3 "$here/accuracy.py" --work "$work" --settings $settings "${crossed[@]}" --seeds $seeds --csv accuracy.csv
