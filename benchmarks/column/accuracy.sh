@@ -40,6 +40,7 @@
 #   settle     phases ending at rest only (substeps 247): the state-based phases alone
 #   inertia10  the defaults with fix wire inertia 10
 #   dt01       the defaults with an NSCD step of 0.01 (twice the deck's)
+#   anderson   the defaults with fix nscd method anderson
 # Writes benchmarks/column/work/accuracy/<setting>.<seed>.log and accuracy.csv (SCENE small:
 # work/accuracy.small/).
 set -euo pipefail
@@ -65,16 +66,17 @@ case $scene in
          common=("${small_column[@]}" -var dump_every 1000000) ;;
   *) echo "accuracy.sh: SCENE $scene: use papers or small" >&2; exit 1 ;;
 esac
-options_of() {
+options_of() {   # the -var's of a setting, one argument per line
   case $1 in
-    today) echo "-var substeps 247 -var settle fixed" ;;
-    new) echo "" ;;
-    fast) echo "-var substeps stable" ;;
-    relax01) echo "-var substeps stable -var v_relax 0.01" ;;
-    substeps) echo "-var substeps stable -var settle fixed" ;;
-    settle) echo "-var substeps 247" ;;
-    inertia10) echo "-var inertia 10" ;;
-    dt01) echo "-var dt 0.01" ;;
+    today) printf '%s\n' -var substeps 247 -var settle fixed ;;
+    new) ;;
+    fast) printf '%s\n' -var substeps stable ;;
+    relax01) printf '%s\n' -var substeps stable -var v_relax 0.01 ;;
+    substeps) printf '%s\n' -var substeps stable -var settle fixed ;;
+    settle) printf '%s\n' -var substeps 247 ;;
+    inertia10) printf '%s\n' -var inertia 10 ;;
+    dt01) printf '%s\n' -var dt 0.01 ;;
+    anderson) printf '%s\n' -var solver_options "method anderson" ;;
     *) echo "accuracy.sh: unknown setting $1" >&2; exit 1 ;;
   esac
 }
@@ -90,10 +92,11 @@ queue() {      # name seed options...: run in the background once fewer than JOB
   grep -q "s user" "$1.$2.time" 2>/dev/null && return    # done before: kept
   run_one "$@" &
 }
+for setting in $settings; do options_of "$setting" > /dev/null; done    # an unknown one stops here
 for setting in $settings; do
+  mapfile -t options < <(options_of "$setting")
   for seed in $seeds; do
-    # shellcheck disable=SC2046
-    queue "$setting" "$seed" $(options_of "$setting")
+    queue "$setting" "$seed" "${options[@]}"
   done
 done
 wait
@@ -104,11 +107,11 @@ if [ -n "$cross" ]; then
   for pair in "$a $b" "$b $a"; do
     read -r built loaded <<< "$pair"
     crossed+=("$built-then-$loaded")
+    mapfile -t options < <(options_of "$loaded")
     for seed in $seeds; do
       # the deck reads NAME.phase4.restart for -var start 5: the built column under the new name
       ln -sf "$built.$seed.phase4.restart" "$built-then-$loaded.$seed.phase4.restart"
-      # shellcheck disable=SC2046
-      queue "$built-then-$loaded" "$seed" -var start 5 $(options_of "$loaded")
+      queue "$built-then-$loaded" "$seed" -var start 5 "${options[@]}"
     done
   done
   wait
