@@ -211,6 +211,13 @@ bool FixNSCD::set_option(const std::string &key, const char *value)
 void FixNSCD::check_options()
 {
   if (exchange_every < 1) error->all(FLERR, "fix nscd: exchange {} must be >= 1", exchange_every);
+  // Momentum and mixing extrapolate each rank's sweeps on ghost velocities that are stale
+  // between exchanges: on the papers' column exchange 2 took 1.6 times the sweeps and
+  // exchange 4 stalled at max_sweeps (doc/fix_nscd.rst, "Ghost exchange").
+  if (exchange_every > 1 && comm->nprocs > 1 && solver->options.acceleration != nscd::Acceleration::none &&
+      comm->me == 0)
+    error->warning(FLERR, "fix nscd: exchange {} with an accelerated method needs more sweeps on several ranks; "
+                   "use exchange 1", exchange_every);
   if (warn_every < 1) error->all(FLERR, "fix nscd: warn {} must be >= 1", warn_every);
   if (!(interpenetration_warning >= 0.0) || !std::isfinite(interpenetration_warning))
     error->all(FLERR, "fix nscd: interpenetration {} must be a finite fraction >= 0 of the rounding radius "
