@@ -172,6 +172,7 @@ class FixNSCD : public Fix {
   void solve();
   void count_run_statistics();
   CommKind comm_kind() const;
+  bool in_sweep_exchange(int i) const;
   std::string communication_report();
   void exchange_velocities();
   void move_grains();

@@ -1349,3 +1349,39 @@ TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
     EXPECT_EQ(all[FixNSCD::COMM_STEP].messages, 3.0 * receiving * steps) << layout;
   }
 }
+
+// Points (wire nodes: shape 0, not in fix nscd's group) have no contact in the solver, so
+// the exchanges between sweeps leave them out; each step's ghost state still carries them
+// (fix wire and the neighbour lists need their motion). The two cubes of the test above, and
+// a point above each, ghosts of the other rank too: per sweep exchange 96 bytes per remote
+// cube and none per point (192 per remote ghost before), the ghost state 96 per remote ghost
+// of either kind, and the cubes' rest as before. On 1 rank nothing comes from another rank.
+TEST_F(NSCDTest, PointsAreLeftOutOfTheExchangesBetweenSweeps)
+{
+  const double steps = 20;
+  commands({"units lj", "atom_style spheropolyhedron", "atom_modify map array", "boundary f p f",
+            "processors * 1 1", "shapes read " + scratch("shapes"), "region box block -20 20 -4 4 -1 9",
+            "create_box 2 box", "pair_style nscd", "pair_coeff * * 0.5", "neighbor 0.3 bin",
+            "neigh_modify every 1 delay 0 check yes", "timestep 0.001"});
+  add_cube(-0.6, 0.0, 0.5);
+  add_cube(0.6, 0.0, 0.5);
+  add_cube(-0.3, 0.0, 3.0, 2);
+  add_cube(0.3, 0.0, 3.0, 2);
+  commands({"group grains type 1", "shapes assign grains shape 1 density 1",
+            "fix floor grains nscd/wall plane 0 0 0 0 0 1 friction 0.5", "fix g grains gravity 1.0 vector 0 0 -1",
+            "fix solver grains nscd tolerance 1e-10 max_sweeps 2000 check 1", "thermo_style custom step",
+            "thermo 1000"});
+  run("run " + num(steps));
+  const std::vector<NSCD_NS::NSCDCommCount::Tally> all = solver()->comm_count().summed(MPI_COMM_WORLD);
+  const double exchanges = (double) solver()->sweep_exchanges();
+  const double cubes = ranks() > 1 ? 2.0 : 0.0, points = cubes;    // ghosts from another rank
+  EXPECT_GE(exchanges, steps);
+  EXPECT_EQ(all[FixNSCD::COMM_SWEEP].bytes, 96.0 * cubes * exchanges);
+  EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].atoms, (cubes + points) * steps);
+  EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].bytes, 96.0 * (cubes + points) * steps);
+  for (int tag : {1, 2}) {
+    EXPECT_NEAR(position_of(tag)[2], 0.5, 1e-6) << "cube " << tag;
+    EXPECT_NEAR(velocity_of(tag)[2], 0.0, 1e-6) << "cube " << tag;
+  }
+  for (int tag : {3, 4}) EXPECT_EQ(position_of(tag)[2], 3.0) << "point " << tag;
+}
