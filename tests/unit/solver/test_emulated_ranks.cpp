@@ -178,16 +178,43 @@ std::vector<int> slabs_along_x(const ContactProblem &problem, int count)
   return owner;
 }
 
+// A 7-level brick pyramid and its answer on one rank, plain Gauss-Seidel to the tolerance.
+struct Pyramid {
+  const int levels = 7;
+  const double tolerance = 1e-9, dt = 1e-3;
+  const ContactProblem whole = brick_pyramid(levels, 0.5, dt);
+  ContactProblem single = whole;
+  bool single_converged = solve(single, options_for({"gs", Acceleration::none, 0.0}, tolerance)).converged;
+
+  // A solve on emulated ranks must give one rank's answer: the floor carries the weight,
+  // every impulse in its cone, and every brick's velocity is the one-rank solve's within
+  // what both tolerances allow.
+  void expect_answer_of_one_rank(const Emulated &run, const std::string &label) const;
+};
+
+void Pyramid::expect_answer_of_one_rank(const Emulated &run, const std::string &label) const
+{
+  const double weight = levels * (levels + 1) / 2 * kGravity * dt;
+  const ContactProblem result = gathered(whole, run);
+  double floor = 0.0;
+  for (const Contact &c : result.contacts)
+    if (c.body_j == kEnvironment) floor += c.impulse.z();
+  EXPECT_NEAR(floor, weight, 1e-8 * weight) << label;
+  EXPECT_LT(coulomb_violation(result, weight, kGravity * dt), 1e-6) << label;
+  // Both runs stop at contact velocity errors of about tolerance x sqrt(scale_squared);
+  // a brick's velocity error adds up those of the contacts below it (levels of them).
+  const double velocity_error = 2.0 * levels * tolerance * std::sqrt(run.report.terms.scale_squared);
+  for (std::size_t b = 0; b < whole.bodies.size(); ++b)
+    EXPECT_LT((result.bodies[b].velocity - single.bodies[b].velocity).norm(), velocity_error)
+        << label << ", brick " << b;
+}
+
 }    // namespace
 
 TEST(EmulatedRanks, PyramidOnTwoAndFourRanksMatchesOneRank)
 {
-  const int levels = 7;
-  const double tolerance = 1e-9, dt = 1e-3;
-  const double weight = levels * (levels + 1) / 2 * kGravity * dt;
-  const ContactProblem whole = brick_pyramid(levels, 0.5, dt);
-  ContactProblem single = whole;
-  ASSERT_TRUE(solve(single, options_for({"gs", Acceleration::none, 0.0}, tolerance)).converged);
+  const Pyramid pyramid;
+  ASSERT_TRUE(pyramid.single_converged);
   for (const Method &method : {Method{"gs", Acceleration::none, 0.0},
                                Method{"nesterov", Acceleration::nesterov, 0.0},
                                Method{"nncg", Acceleration::nncg, 0.0},
@@ -196,23 +223,11 @@ TEST(EmulatedRanks, PyramidOnTwoAndFourRanksMatchesOneRank)
                                Method{"nesterov+coarse", Acceleration::nesterov, 2.0}}) {
     std::string line = "[ info ] pyramid, " + method.name + ", sweeps to 1e-9 on 1/2/4 ranks:";
     for (const int count : {1, 2, 4}) {
-      const Emulated run =
-          solve_on_ranks(whole, slabs_along_x(whole, count), count, options_for(method, tolerance));
+      const Emulated run = solve_on_ranks(pyramid.whole, slabs_along_x(pyramid.whole, count), count,
+                                          options_for(method, pyramid.tolerance));
       ASSERT_TRUE(run.report.converged) << method.name << " on " << count << " ranks";
       line += " " + std::to_string(run.report.sweeps);
-      const ContactProblem result = gathered(whole, run);
-      double floor = 0.0;
-      for (const Contact &c : result.contacts)
-        if (c.body_j == kEnvironment) floor += c.impulse.z();
-      EXPECT_NEAR(floor, weight, 1e-8 * weight) << method.name << " on " << count;
-      EXPECT_LT(coulomb_violation(result, weight, kGravity * dt), 1e-6) << method.name << " on " << count;
-      // Both runs stop at contact velocity errors of about tolerance x sqrt(scale_squared);
-      // a brick's velocity error adds up those of the contacts below it (levels of them).
-      const double velocity_error =
-          2.0 * levels * tolerance * std::sqrt(run.report.terms.scale_squared);
-      for (std::size_t b = 0; b < whole.bodies.size(); ++b)
-        EXPECT_LT((result.bodies[b].velocity - single.bodies[b].velocity).norm(), velocity_error)
-            << method.name << " on " << count << ", brick " << b;
+      pyramid.expect_answer_of_one_rank(run, method.name + " on " + std::to_string(count) + " ranks");
     }
     std::cout << line << "\n";
   }
@@ -226,36 +241,24 @@ TEST(EmulatedRanks, PyramidOnTwoAndFourRanksMatchesOneRank)
 // ranks, checks every 4 sweeps as in fix nscd.
 TEST(EmulatedRanks, PyramidWithFewerExchangesMatchesOneRank)
 {
-  const int levels = 7;
-  const double tolerance = 1e-9, dt = 1e-3;
-  const double weight = levels * (levels + 1) / 2 * kGravity * dt;
-  const ContactProblem whole = brick_pyramid(levels, 0.5, dt);
-  ContactProblem single = whole;
-  ASSERT_TRUE(solve(single, options_for({"gs", Acceleration::none, 0.0}, tolerance)).converged);
+  const Pyramid pyramid;
+  ASSERT_TRUE(pyramid.single_converged);
   for (const Method &method : {Method{"gs", Acceleration::none, 0.0},
                                Method{"nesterov", Acceleration::nesterov, 0.0},
                                Method{"anderson", Acceleration::anderson, 0.0}}) {
-    SolverOptions options = options_for(method, tolerance);
+    SolverOptions options = options_for(method, pyramid.tolerance);
     options.check_every = 4;
     std::string line = "[ info ] pyramid, " + method.name + ", sweeps to 1e-9 on 2/4 ranks, exchange 1/2/3/4:";
     for (const int count : {2, 4}) {
       line += " |";
       for (const int every : {1, 2, 3, 4}) {
-        const Emulated run = solve_on_ranks(whole, slabs_along_x(whole, count), count, options, every);
+        const Emulated run =
+            solve_on_ranks(pyramid.whole, slabs_along_x(pyramid.whole, count), count, options, every);
         const std::string label = method.name + " on " + std::to_string(count) + " ranks, exchange " +
             std::to_string(every);
         ASSERT_TRUE(run.report.converged) << label;
         line += " " + std::to_string(run.report.sweeps);
-        const ContactProblem result = gathered(whole, run);
-        double floor = 0.0;
-        for (const Contact &c : result.contacts)
-          if (c.body_j == kEnvironment) floor += c.impulse.z();
-        EXPECT_NEAR(floor, weight, 1e-8 * weight) << label;
-        EXPECT_LT(coulomb_violation(result, weight, kGravity * dt), 1e-6) << label;
-        const double velocity_error = 2.0 * levels * tolerance * std::sqrt(run.report.terms.scale_squared);
-        for (std::size_t b = 0; b < whole.bodies.size(); ++b)
-          EXPECT_LT((result.bodies[b].velocity - single.bodies[b].velocity).norm(), velocity_error)
-              << label << ", brick " << b;
+        pyramid.expect_answer_of_one_rank(run, label);
       }
     }
     std::cout << line << "\n";
