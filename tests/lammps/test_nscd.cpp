@@ -1354,7 +1354,7 @@ TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
 // the exchanges between sweeps leave them out; each step's ghost state still carries them
 // (fix wire and the neighbour lists need their motion). The two cubes of the test above, and
 // a point above each, ghosts of the other rank too: per sweep exchange 96 bytes per remote
-// cube and none per point (192 per remote ghost before), the ghost state 96 per remote ghost
+// cube and none per point (before, 96 per point as well), the ghost state 96 per remote ghost
 // of either kind, and the cubes' rest as before. On 1 rank nothing comes from another rank.
 TEST_F(NSCDTest, PointsAreLeftOutOfTheExchangesBetweenSweeps)
 {
