@@ -134,6 +134,44 @@ class IsotropicAndDirectedFabrics(unittest.TestCase):
             self.assertAlmostEqual(row["tensor_angle_rad"], expected, delta=0.02)
         self.assertLess(os.path.getsize(out + ".png"), 300 * 1024)
 
+    def test_seeds_spread_is_the_sd_of_the_seeds_means(self):
+        # three seeds with a uniform angle each: every bin's mean over the seeds is their mean,
+        # its bar their sample standard deviation
+        rng = np.random.default_rng(12)
+        files = []
+        for k, angle in enumerate((0.1, 0.2, 0.4)):
+            pos, tensors, _ = synthetic.grains_with_direction(rng, 400, (0.0, 0.0), lambda r, a=angle: a)
+            files.append(synthetic.write_dump(os.path.join(self.dir.name, f"seed{k}.dump"),
+                                              [(100 * k, synthetic.FABRIC_HEADER, synthetic.fabric_rows(pos, tensors))]))
+        out = os.path.join(self.dir.name, "seeds")
+        self.assertEqual(cli.main(["fabric-angle", "--run", "column=" + ",".join(files), "--spread", "seeds",
+                                   "--axis", "0", "0", "--rbins", "3", "--rmax", "5", "-o", out]), 0)
+        table = synthetic.read_csv(out + ".csv")
+        self.assertEqual(len(table), 4 * 3)
+        for k, angle in enumerate((0.1, 0.2, 0.4)):
+            seed_rows = [row for row in table if row["run"] == f"column #{k + 1}"]
+            np.testing.assert_allclose([row["mean_angle_rad"] for row in seed_rows], angle, atol=1e-6)
+        summary = [row for row in table if row["run"] == "column"]
+        self.assertEqual(sum(row["grains"] for row in summary), 1200)
+        for row in summary:
+            self.assertEqual(row["seeds"], 3)
+            self.assertAlmostEqual(row["mean_angle_rad"], 0.7 / 3, delta=1e-5)
+            self.assertAlmostEqual(row["sd_over_seeds_rad"], np.std([0.1, 0.2, 0.4], ddof=1), delta=1e-5)
+            self.assertAlmostEqual(row["tensor_angle_rad"], 0.7 / 3, delta=1e-5)
+        self.assertLess(os.path.getsize(out + ".png"), 300 * 1024)
+        # one file is no spread over seeds; --steps cannot pick a snapshot per seed
+        with self.assertRaises(SystemExit):
+            cli.main(["fabric-angle", "--run", f"one={files[0]}", "--spread", "seeds", "-o", out])
+        with self.assertRaises(SystemExit):
+            cli.main(["fabric-angle", "--run", "column=" + ",".join(files), "--spread", "seeds", "--steps", "0",
+                      "-o", out])
+
+    def test_over_samples_skips_empty_bins_of_a_sample(self):
+        n, mean, sd = cylinder.over_samples([[1.0, np.nan, 3.0], [3.0, np.nan, np.nan], [5.0, 2.0, 5.0]])
+        np.testing.assert_array_equal(n, [3, 1, 2])
+        np.testing.assert_allclose(mean, [3.0, 2.0, 4.0])
+        np.testing.assert_allclose(sd, [2.0, np.nan, np.sqrt(2.0)])
+
 
 if __name__ == "__main__":
     unittest.main()

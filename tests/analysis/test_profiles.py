@@ -100,6 +100,32 @@ class RadialForceProfile(unittest.TestCase):
         np.testing.assert_array_equal(count, [1, 1])
         np.testing.assert_array_equal(mean, [2.0, 4.0])
 
+    def test_seeds_with_a_uniform_force_each_give_their_mean_and_sd(self):
+        # three seeds' snapshots with fn = 1, 2, 4 everywhere; the third seed's file holds two
+        # snapshots (pooled into its sample); a z window keeps half of the contacts
+        rng = np.random.default_rng(21)
+        files = []
+        for k, fn in enumerate((1.0, 2.0, 4.0)):
+            snaps = [(step, PAIR_HEADER, pair_rows(rng, 1500, (0.0, 0.0), lambda r, f=fn: f, boundary_rows=5)[0])
+                     for step in ((10, 20) if k == 2 else (10,))]
+            files.append(synthetic.write_dump(os.path.join(self.dir.name, f"s{k}.dump"), snaps, "ENTRIES"))
+        out = os.path.join(self.dir.name, "seeds")
+        self.assertEqual(cli.main(["force-profile", "--run", "rest=" + ",".join(files), "--axis", "0", "0",
+                                   "--rbins", "4", "--rmax", "4", "--zmax", "4", "-o", out]), 0)
+        table = synthetic.read_csv(out + ".csv")
+        summary = [row for row in table if row["label"] == "rest"]
+        self.assertEqual(len(summary), 4)
+        for row in summary:
+            self.assertEqual(row["seeds"], 3)
+            self.assertAlmostEqual(row["mean_fn"], 7.0 / 3, delta=1e-5)
+            self.assertAlmostEqual(row["sd_over_seeds_fn"], np.std([1.0, 2.0, 4.0], ddof=1), delta=1e-5)
+        third = [row for row in table if row["label"] == "rest #3"]
+        self.assertEqual({row["steps"] for row in third}, {"10+20"})
+        # z in [0, 8) uniformly: about half of the 4 x 1500 rows lie below z = 4
+        self.assertAlmostEqual(sum(row["contacts"] for row in summary) / 6000, 0.5, delta=0.05)
+        with self.assertRaises(SystemExit):    # dump files and --run together
+            cli.main(["force-profile", files[0], "--run", "rest=" + ",".join(files), "-o", out])
+
 
 class CylindricalAverages(unittest.TestCase):
     def test_value_equal_to_r_plus_z_is_averaged_per_bin(self):

@@ -98,6 +98,25 @@ class WireContactOrientations(unittest.TestCase):
             within = [row for row in synthetic.read_csv(out + ".csv") if row["alpha_lo_deg"] == "within"]
             self.assertEqual([row["fraction"] for row in within], [1.0, 0.0])
 
+    def test_seeds_give_the_mean_fraction_and_its_sd(self):
+        # seeds all vertical, all radial, all vertical: 2/3 within 30 degrees, sd sqrt(1/3)
+        rng = np.random.default_rng(13)
+        with tempfile.TemporaryDirectory() as d:
+            files = []
+            for k, alpha in enumerate((np.pi / 2, 0.0, np.pi / 2)):
+                rows = contact_rows(rng, np.full(40, alpha), np.full(40, 1.0 + k))
+                files.append(synthetic.write_dump(os.path.join(d, f"s{k}.dump"), [(0, HEADER, rows)], "ENTRIES"))
+            out = os.path.join(d, "seeds")
+            self.assertEqual(cli.main(["wire-contacts", "--run", "rest=" + ",".join(files), "--axis", "0", "0",
+                                       "--bins", "5", "-o", out]), 0)
+            table = synthetic.read_csv(out + ".csv")
+            within = [row for row in table if row["label"] == "rest" and row["alpha_lo_deg"] == "within"][0]
+            self.assertAlmostEqual(within["fraction"], 2 / 3, places=5)
+            self.assertAlmostEqual(within["sd_fraction"], np.sqrt(1 / 3), places=5)
+            bins = [row for row in table if row["label"] == "rest" and row["alpha_lo_deg"] != "within"]
+            np.testing.assert_allclose([row["fraction"] for row in bins], [1 / 3, 0, 2 / 3, 0, 0], atol=1e-6)
+            self.assertLess(os.path.getsize(out + ".png"), 300 * 1024)
+
     def test_layout_is_the_proposed_one(self):
         self.assertEqual(list(layouts.WIRE_CONTACTS), ["id1", "id2", "other", "kind", "px", "py", "pz", "nx", "ny",
                                                         "nz", "fn", "ftx", "fty", "ftz", "overlap", "status"])

@@ -23,7 +23,7 @@ import sys
 import numpy as np
 
 from . import cylinder, fabric, fields, forces, logs, phases, plots, stress, vtk, wire_breaks, wire_contacts, wire_loops
-from .dumps import DumpError, read_dumps
+from .dumps import DumpError, expand, read_dumps
 from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
 
 
@@ -103,9 +103,12 @@ def cmd_cylavg(args):
 
 # --- fabric-field: the papers' Fig. 3 ---------------------------------------------------
 
+def _fabric_per_grain(args):
+    return lambda s: fabric.per_grain(s, _grain_axis(args, s), _zrange(args))
+
+
 def _pooled_fabric(args, patterns, steps, last):
-    return fields.pooled(lambda s: fabric.per_grain(s, _grain_axis(args, s), _zrange(args)),
-                         read_dumps(patterns, steps, last))
+    return fields.pooled(_fabric_per_grain(args), read_dumps(patterns, steps, last))
 
 
 FIELD_HEADER = ["r", "z", "grains", "F_rr", "F_rz", "F_zz", "lambda_max", "vmax_r", "vmax_z", "lambda_min",
@@ -136,11 +139,27 @@ def _parse_runs(runs):
     return out
 
 
-def _angle_plot(args, pooled, ylabel, what):
-    """Mean signed angle vs r of each run's principal direction (fabric-angle, stress-angle):
-    pooled(args, patterns, steps, last) gives (r, z, blocks, angle, snapshots); `what` names
-    the direction in the summary lines."""
-    runs = [(label, pooled(args, patterns, args.steps, args.last)) for label, patterns in _parse_runs(args.run)]
+def _seed_files(args, patterns):
+    """--spread seeds: each file of a run is one seed, its snapshots (--last: its last one)
+    pooled into one sample."""
+    if args.steps is not None:
+        raise SystemExit("nscd-analysis: --spread seeds takes each seed's files, not --steps "
+                         "(name the snapshot files, or use --last)")
+    files = expand(patterns)
+    if len(files) < 2:
+        raise SystemExit(f"nscd-analysis: --spread seeds needs two or more files per run (one per seed), "
+                         f"got {len(files)}: {', '.join(files)}")
+    return [read_dumps([f], None, args.last) for f in files]
+
+
+def _angle_plot(args, per_grain, ylabel, what):
+    """Mean signed angle vs r of each run's principal direction (fabric-angle, stress-angle);
+    per_grain(snapshot) gives (r, z, blocks, angle); `what` names the direction in the
+    summary lines. --spread seeds: the mean and standard deviation over the run's files."""
+    if args.spread == "seeds":
+        return _angle_plot_over_seeds(args, per_grain, ylabel, what)
+    runs = [(label, fields.pooled(per_grain, read_dumps(patterns, args.steps, args.last)))
+            for label, patterns in _parse_runs(args.run)]
     r_edges = _r_edges(args, np.concatenate([data[0] for _, data in runs]))
     rc = cylinder.centres(r_edges)
     rows, summary, curves = [], [], []
@@ -160,15 +179,55 @@ def _angle_plot(args, pooled, ylabel, what):
         print(line)
 
 
+def _angle_plot_over_seeds(args, per_grain, ylabel, what):
+    """_angle_plot with one sample per file: each seed's profile (rows 'LABEL #k'), then per
+    r bin their mean and sample standard deviation (rows 'LABEL'), which the figure draws."""
+    runs = [(label, [fields.pooled(per_grain, snaps) for snaps in _seed_files(args, patterns)])
+            for label, patterns in _parse_runs(args.run)]
+    r_edges = _r_edges(args, np.concatenate([seed[0] for _, seeds in runs for seed in seeds]))
+    rc = cylinder.centres(r_edges)
+    rows, summary, curves = [], [], []
+    for label, seeds in runs:
+        profiles = [fields.angle_profile(r, blocks, angle, r_edges) for r, _, blocks, angle, _ in seeds]
+        for k, (count, mean, _, tensor_angle) in enumerate(profiles):
+            rows += [(f"{label} #{k + 1}", r_edges[b], r_edges[b + 1], rc[b], count[b], 1, mean[b], "",
+                      tensor_angle[b]) for b in range(len(rc))]
+        column = 3 if args.method == "tensor" else 1
+        n, mean, sd = cylinder.over_samples([p[column] for p in profiles])
+        _, tensor_mean, _ = cylinder.over_samples([p[3] for p in profiles])
+        grains = np.sum([p[0] for p in profiles], axis=0)
+        rows += [(label, r_edges[b], r_edges[b + 1], rc[b], grains[b], n[b], mean[b], sd[b], tensor_mean[b])
+                 for b in range(len(rc))]
+        curves.append((f"{label} ({len(seeds)} seeds)", rc / _r_scale(args), mean, sd))
+        per_seed = [np.nanmean(angle) for _, _, _, angle, _ in seeds]
+        summary.append(f"{label}: mean angle {what}over all grains per seed "
+                       f"{', '.join(f'{a:+.4f}' for a in per_seed)} rad: {np.mean(per_seed):+.4f} "
+                       f"+- {np.std(per_seed, ddof=1):.4f} (sd over {len(seeds)} seeds)")
+    title = ("mean over grains" if args.method == "grains" else "angle of the mean tensor") + \
+        ", per seed; bars: sd over the seeds"
+    fig = plots.profiles(curves, _radius(args), ylabel, zero_line=True, title=title)
+    print(plots.save(fig, args.out), _write_csv(args.out, ["run", "r_lo", "r_hi", "r", "grains", "seeds",
+                                                            "mean_angle_rad", "sd_over_seeds_rad",
+                                                            "tensor_angle_rad"], rows,
+                                                [f"--spread seeds, --method {args.method}: rows 'RUN #k' one seed "
+                                                 "(mean_angle_rad its mean over grains), rows 'RUN' the mean and "
+                                                 "sample sd of the seeds' values per bin"] + summary))
+    for line in summary:
+        print(line)
+
+
 def cmd_fabric_angle(args):
-    _angle_plot(args, _pooled_fabric, "signed angle of the largest fabric direction (rad)", "")
+    _angle_plot(args, _fabric_per_grain(args), "signed angle of the largest fabric direction (rad)", "")
 
 
 # --- stress fields: stress-field, stress-angle, stress-profile, crush-profile ------------
 
+def _stress_per_grain(args):
+    return lambda s: stress.per_grain(s, _grain_axis(args, s), _zrange(args), args.stress_id)
+
+
 def _pooled_stress(args, patterns, steps, last):
-    return fields.pooled(lambda s: stress.per_grain(s, _grain_axis(args, s), _zrange(args), args.stress_id),
-                         read_dumps(patterns, steps, last))
+    return fields.pooled(_stress_per_grain(args), read_dumps(patterns, steps, last))
 
 
 def cmd_stress_field(args):
@@ -194,7 +253,7 @@ def cmd_stress_field(args):
 
 
 def cmd_stress_angle(args):
-    _angle_plot(args, _pooled_stress, "signed angle of the major principal stress (rad)",
+    _angle_plot(args, _stress_per_grain(args), "signed angle of the major principal stress (rad)",
                 "of the major principal stress ")
 
 
@@ -282,16 +341,34 @@ def cmd_wire_breaks(args):
 
 # --- force-profile: the papers' Fig. 5 --------------------------------------------------
 
-def cmd_force_profile(args):
-    snaps = read_dumps(args.dump, args.steps, args.last)
-    labels = args.labels or [f"step {s.timestep}" for s in snaps]
-    if len(labels) != len(snaps):
-        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+def _dumps_or_runs(args):
+    """force-profile, wire-contacts: snapshot files, or --run groups of seeds, not both."""
+    if bool(args.dump) == bool(args.run):
+        raise SystemExit(f"nscd-analysis {args.command}: give dump files, or --run LABEL=FILES (one file per "
+                         "seed), not both")
+    if args.run and args.labels:
+        raise SystemExit(f"nscd-analysis {args.command}: --labels names snapshots; with --run the runs' LABELs do")
+
+
+def _force_profiles(args, snaps):
+    """Each snapshot's normal-force profile per r bin: [(snapshot, axis, contacts' r)]."""
     profiles = []
     for s in snaps:
         positions, _, centres = forces.grain_contacts(s, args.points)
         axis = np.array(args.axis) if args.axis is not None else cylinder.axis_from_centre_of_mass(centres)
         profiles.append((s, axis, cylinder.Cylindrical(positions, axis).r if len(positions) else np.zeros(0)))
+    return profiles
+
+
+def cmd_force_profile(args):
+    _dumps_or_runs(args)
+    if args.run:
+        return _force_profile_over_seeds(args)
+    snaps = read_dumps(args.dump, args.steps, args.last)
+    labels = args.labels or [f"step {s.timestep}" for s in snaps]
+    if len(labels) != len(snaps):
+        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+    profiles = _force_profiles(args, snaps)
     r_edges = _r_edges(args, np.concatenate([p[2] for p in profiles]))
     rc = cylinder.centres(r_edges)
     rows, curves = [], []
@@ -305,19 +382,51 @@ def cmd_force_profile(args):
                                                             "mean_fn", "sem_fn"], rows))
 
 
+def _force_profile_over_seeds(args):
+    """force-profile --run: per run, each seed's profile (its files' snapshots pooled: rows
+    'LABEL #k'), then per r bin the mean and sample standard deviation of the seeds' means."""
+    axis = None if args.axis is None else np.array(args.axis)
+    runs = [(label, [[(s.timestep,) + forces.radii_and_forces(s, axis, _zrange(args), args.points)[:2]
+                      for s in snaps] for snaps in _seed_files(args, patterns)])
+            for label, patterns in _parse_runs(args.run)]
+    r_edges = _r_edges(args, np.concatenate([r for _, seeds in runs for seed in seeds for _, r, _ in seed]))
+    rc = cylinder.centres(r_edges)
+    rows, curves = [], []
+    for label, seeds in runs:
+        means, contacts = [], np.zeros(len(rc), dtype=int)
+        for k, seed in enumerate(seeds):
+            count, mean, _ = cylinder.binned_mean(np.concatenate([fn for _, _, fn in seed]),
+                                                  np.concatenate([r for _, r, _ in seed]), r_edges)
+            means.append(mean)
+            contacts += count
+            steps = "+".join(str(step) for step, _, _ in seed)
+            rows += [(f"{label} #{k + 1}", steps, r_edges[b], r_edges[b + 1], rc[b], count[b], 1, mean[b], "")
+                     for b in range(len(rc))]
+        n, mean, sd = cylinder.over_samples(means)
+        rows += [(label, "", r_edges[b], r_edges[b + 1], rc[b], contacts[b], n[b], mean[b], sd[b])
+                 for b in range(len(rc))]
+        curves.append((f"{label} ({len(seeds)} seeds)", rc / _r_scale(args), mean, sd))
+    fig = plots.profiles(curves, _radius(args), "mean normal force between grains",
+                         title="mean over contacts, per seed; bars: sd over the seeds")
+    print(plots.save(fig, args.out), _write_csv(args.out, ["label", "steps", "r_lo", "r_hi", "r", "contacts", "seeds",
+                                                            "mean_fn", "sd_over_seeds_fn"], rows,
+                                                ["--run: rows 'LABEL #k' one seed (its snapshots' contacts pooled), "
+                                                 "rows 'LABEL' the mean and sample sd of the seeds' means per bin"]))
+
+
 # --- wire-contacts: the papers' Fig. 6 --------------------------------------------------
 
 def cmd_wire_contacts(args):
+    _dumps_or_runs(args)
+    if args.run:
+        return _wire_contacts_over_seeds(args)
     snaps = read_dumps(args.dump, args.steps, args.last)
     labels = args.labels or [f"step {s.timestep}" for s in snaps]
     if len(labels) != len(snaps):
         raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
     rows, summary, histograms = [], [], []
     for s, label in zip(snaps, labels):
-        points, f = wire_contacts.forces_on_wire(s, args.kind)
-        axis = np.array(args.axis) if args.axis is not None else (
-            cylinder.axis_from_centre_of_mass(points) if len(points) else np.zeros(2))
-        alpha, magnitude = wire_contacts.orientation_rz(points, f, axis)
+        alpha, magnitude = _wire_orientations(args, s)
         edges, fraction, mean, normalised = wire_contacts.polar_histogram(alpha, magnitude, args.bins)
         near = wire_contacts.fraction_near_vertical(alpha, args.vertical_within)
         summary.append(f"{label}: {len(alpha)} contacts, fraction within {args.vertical_within:g} deg of the "
@@ -333,6 +442,55 @@ def cmd_wire_contacts(args):
                                                 ["alpha: angle of (f_r, f_z) from the radial direction, 90 = vertical;",
                                                  "rows 'within': fraction of contacts within that many degrees of 90"]
                                                 + summary))
+    for line in summary:
+        print(line)
+
+
+def _wire_orientations(args, snapshot):
+    """alpha and in-plane magnitude of the snapshot's wire contacts of --kind (wire-contacts)."""
+    points, f = wire_contacts.forces_on_wire(snapshot, args.kind)
+    axis = np.array(args.axis) if args.axis is not None else (
+        cylinder.axis_from_centre_of_mass(points) if len(points) else np.zeros(2))
+    return wire_contacts.orientation_rz(points, f, axis)
+
+
+def _wire_contacts_over_seeds(args):
+    """wire-contacts --run: per run, each seed's histogram (its files' snapshots pooled: rows
+    'LABEL #k'), then per bin the mean and sample standard deviation over the seeds."""
+    rows, summary, histograms = [], [], []
+    for label, patterns in _parse_runs(args.run):
+        fractions, normalised, near, magnitude_means = [], [], [], []
+        for k, snaps in enumerate(_seed_files(args, patterns)):
+            parts = [_wire_orientations(args, s) for s in snaps]
+            alpha, magnitude = np.concatenate([a for a, _ in parts]), np.concatenate([m for _, m in parts])
+            edges, fraction, mean, norm = wire_contacts.polar_histogram(alpha, magnitude, args.bins)
+            fractions.append(fraction)
+            normalised.append(norm)
+            near.append(wire_contacts.fraction_near_vertical(alpha, args.vertical_within))
+            magnitude_means.append(np.mean(magnitude) if len(magnitude) else np.nan)
+            steps = "+".join(str(s.timestep) for s in snaps)
+            rows += [(f"{label} #{k + 1}", steps, np.degrees(edges[b]), np.degrees(edges[b + 1]), 1, fraction[b], "",
+                      mean[b], norm[b], "") for b in range(args.bins)]
+            rows.append((f"{label} #{k + 1}", steps, "within", args.vertical_within, 1, near[-1], "", "", "", ""))
+        n, fraction, fraction_sd = cylinder.over_samples(fractions)
+        _, norm, norm_sd = cylinder.over_samples(normalised)
+        rows += [(label, "", np.degrees(edges[b]), np.degrees(edges[b + 1]), n[b], fraction[b], fraction_sd[b], "",
+                  norm[b], norm_sd[b]) for b in range(args.bins)]
+        rows.append((label, "", "within", args.vertical_within, len(near), np.mean(near), np.std(near, ddof=1),
+                     "", "", ""))
+        histograms.append((f"{label} ({len(near)} seeds)", edges, fraction, norm, fraction_sd, norm_sd))
+        summary.append(f"{label}: fraction within {args.vertical_within:g} deg of the vertical per seed "
+                       f"{', '.join(f'{v:.3f}' for v in near)}: {np.mean(near):.3f} +- {np.std(near, ddof=1):.3f}; "
+                       f"mean in-plane force {np.mean(magnitude_means):.4g} +- {np.std(magnitude_means, ddof=1):.2g} "
+                       f"(sd over {len(near)} seeds)")
+    fig = plots.polar_histograms(histograms)
+    print(plots.save(fig, args.out), _write_csv(args.out, ["label", "steps", "alpha_lo_deg", "alpha_hi_deg", "seeds",
+                                                            "fraction", "sd_fraction", "mean_force",
+                                                            "mean_force_normalised", "sd_normalised"], rows,
+                                                ["alpha: angle of (f_r, f_z) from the radial direction, 90 = vertical;",
+                                                 "--run: rows 'LABEL #k' one seed, rows 'LABEL' the mean and sample sd "
+                                                 "over the seeds per bin; rows 'within': the fraction within that many "
+                                                 "degrees of 90"] + summary))
     for line in summary:
         print(line)
 
@@ -516,6 +674,9 @@ def parser():
                    help="LABEL=FILES (comma-separated names or glob patterns); repeat per run")
     p.add_argument("--method", choices=("grains", "tensor"), default="grains",
                    help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
+    p.add_argument("--spread", choices=("grains", "seeds"), default="grains",
+                   help="error bars: standard error over the pooled grains (default), or seeds: each file "
+                        "of a run one seed, bars the standard deviation over them")
     _common(p)
     p.set_defaults(func=cmd_fabric_angle)
 
@@ -533,6 +694,9 @@ def parser():
                    help="LABEL=FILES (comma-separated names or glob patterns); repeat per run")
     p.add_argument("--method", choices=("grains", "tensor"), default="grains",
                    help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
+    p.add_argument("--spread", choices=("grains", "seeds"), default="grains",
+                   help="error bars: standard error over the pooled grains (default), or seeds: each file "
+                        "of a run one seed, bars the standard deviation over them")
     _stress_ids(p)
     _common(p)
     p.set_defaults(func=cmd_stress_angle)
@@ -565,14 +729,18 @@ def parser():
     p.set_defaults(func=cmd_wire_breaks)
 
     p = sub.add_parser("force-profile", help="Fig. 5: mean normal force between grains vs r")
-    p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
+    p.add_argument("dump", nargs="*", help="dump local files of compute nscd/contacts pairs")
+    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
+                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
     p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. the plate loads)")
     p.add_argument("--points", action="store_true", help="the dump has one row per point (no 'pairs')")
     _common(p)
     p.set_defaults(func=cmd_force_profile)
 
     p = sub.add_parser("wire-contacts", help="Fig. 6: polar histograms of wire-grain force orientations")
-    p.add_argument("dump", nargs="+", help="dump local files of compute wire/contacts")
+    p.add_argument("dump", nargs="*", help="dump local files of compute wire/contacts")
+    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
+                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
     p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. 'no load' 'Fz = 800')")
     p.add_argument("--bins", type=int, default=12, help="angular bins over 180 degrees (default 12)")
     p.add_argument("--kind", type=int, default=WIRE_GRAIN, help="contact kind: 1 wire-grain (default), 2, 3")
@@ -611,7 +779,9 @@ def parser():
     p.set_defaults(func=cmd_first_step)
 
     p = sub.add_parser("vtk-network", help="force network as .vtp line segments (one file per step)")
-    p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
+    p.add_argument("dump", nargs="*", help="dump local files of compute nscd/contacts pairs")
+    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
+                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
     p.add_argument("--out", "-o", required=True, help="writes OUT.<step>.vtp")
     p.add_argument("--steps", type=int, nargs="+")
     p.add_argument("--last", action="store_true")

@@ -106,5 +106,18 @@ def binned_mean_2d(values, r, z, r_edges, z_edges):
     return count, mean
 
 
+def over_samples(per_sample):
+    """Per bin, over samples that each give a value per bin (one row per sample, e.g. one per
+    seed; NaN where a sample's bin is empty): how many samples have a value, their mean and
+    their sample standard deviation (NaN below two samples). Rows may hold vectors per bin."""
+    values = np.asarray(per_sample, dtype=float)
+    has = ~np.isnan(values)
+    n = has.sum(axis=0)
+    mean = np.where(n > 0, np.where(has, values, 0.0).sum(axis=0) / np.maximum(n, 1), np.nan)
+    squares = np.where(has, values - mean, 0.0) ** 2
+    sd = np.where(n > 1, np.sqrt(squares.sum(axis=0) / np.maximum(n - 1, 1)), np.nan)
+    return n, mean, sd
+
+
 def centres(bin_edges):
     return 0.5 * (bin_edges[1:] + bin_edges[:-1])

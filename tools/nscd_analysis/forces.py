@@ -44,9 +44,9 @@ def _unique_centres(id_i, xi, id_j, xj):
     return xs[first]
 
 
-def radial_profile(snapshot, r_edges, axis=None, zrange=None, per_point=False):
-    """count, mean and standard error of the normal force per r bin (one snapshot), and
-    the axis used."""
+def radii_and_forces(snapshot, axis=None, zrange=None, per_point=False):
+    """r from the axis and normal force of the snapshot's grain-grain contacts (within zrange
+    in z, if given), and the axis used (default: the grains' centre of mass)."""
     positions, fn, centres = grain_contacts(snapshot, per_point)
     if axis is None:
         axis = axis_from_centre_of_mass(centres)
@@ -54,5 +54,12 @@ def radial_profile(snapshot, r_edges, axis=None, zrange=None, per_point=False):
         inside = (positions[:, 2] >= zrange[0]) & (positions[:, 2] <= zrange[1])
         positions, fn = positions[inside], fn[inside]
     r = Cylindrical(positions, axis).r if len(positions) else np.zeros(0)
+    return r, fn, axis
+
+
+def radial_profile(snapshot, r_edges, axis=None, zrange=None, per_point=False):
+    """count, mean and standard error of the normal force per r bin (one snapshot), and
+    the axis used."""
+    r, fn, axis = radii_and_forces(snapshot, axis, zrange, per_point)
     count, mean, sem = binned_mean(fn, r, r_edges)
     return count, mean, sem, axis

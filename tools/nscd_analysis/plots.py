@@ -153,15 +153,18 @@ def points_rz(groups, radius, zmax, title):
 
 def polar_histograms(rows):
     """One row of two half-disc histograms per snapshot: rows = [(label, edges, fraction,
-    normalised mean force)] (wire_contacts.polar_histogram)."""
+    normalised mean force[, sd of fraction, sd of normalised])] (wire_contacts.polar_histogram;
+    the sds, over seeds, drawn as radial bars)."""
     from matplotlib.ticker import MaxNLocator
     fig, axes = pyplot().subplots(len(rows), 2, figsize=(6.4, 2.4 * len(rows)), subplot_kw={"projection": "polar"},
                                   squeeze=False)
-    for (label, edges, fraction, normalised), (left, right) in zip(rows, axes):
+    for (label, edges, fraction, normalised, *sds), (left, right) in zip(rows, axes):
         width = np.diff(edges)
         left.bar(edges[:-1], fraction, width=width, align="edge", color="tab:blue", edgecolor="k", lw=0.4)
         right.bar(edges[:-1], np.nan_to_num(normalised), width=width, align="edge", color="tab:orange",
                   edgecolor="k", lw=0.4)
+        for ax, values, sd in zip((left, right), (fraction, normalised), sds):
+            ax.errorbar(edges[:-1] + 0.5 * width, values, yerr=sd, fmt="none", ecolor="k", elinewidth=0.8, capsize=1.5)
         for ax, title in ((left, f"{label}: fraction of contacts"), (right, f"{label}: mean |f| / max")):
             ax.set_thetamin(0)
             ax.set_thetamax(180)
