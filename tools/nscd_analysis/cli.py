@@ -22,7 +22,8 @@ import sys
 
 import numpy as np
 
-from . import cylinder, fabric, fields, forces, logs, phases, plots, stress, vtk, wire_breaks, wire_contacts, wire_loops
+from . import (cylinder, fabric, fields, forces, load_curves, logs, phases, plots, stress, vtk, wire_breaks,
+               wire_contacts, wire_loops)
 from .dumps import DumpError, expand, read_dumps
 from .layouts import FABRIC, WIRE_ELEMENTS, WIRE_GRAIN
 
@@ -495,6 +496,36 @@ def _wire_contacts_over_seeds(args):
         print(line)
 
 
+# --- load-curves: load against the plate's sink, over seeds ------------------------------
+
+def cmd_load_curves(args):
+    rows, summary, lines = [], [], []
+    for label, patterns in _parse_runs(args.run):
+        at_loads = []
+        for path in expand(patterns):
+            curve = load_curves.read_load_curve(path)
+            last_load, last_sink, peak, peak_sink = load_curves.summary(curve)
+            sinks = load_curves.sink_at_loads(curve, args.at or [])
+            at_loads.append(sinks)
+            lines.append((label, load_curves.sink(curve), curve[:, 1]))
+            rows.append((label, path, len(curve), int(curve[-1, 0]), last_load, last_sink, peak, peak_sink,
+                         *sinks))
+        if args.at:
+            n, mean, sd = cylinder.over_samples(at_loads)
+            rows.append((label, "mean", "", "", "", "", "", "", *mean))
+            rows.append((label, "sd", "", "", "", "", "", "", *sd))
+            summary += [f"{label}: sink at load {load:g}: {m:.4g} +- {d:.2g} ({k} of {len(at_loads)} curves reach it)"
+                        for load, m, d, k in zip(args.at, mean, sd, n)]
+    fig = plots.load_curves(lines)
+    header = ["run", "file", "rows", "last_step", "last_load", "last_sink", "peak_force", "sink_at_peak"] + \
+        [f"sink_at_{load:g}" for load in (args.at or [])]
+    print(plots.save(fig, args.out), _write_csv(args.out, header, rows, [
+        "sink: how far the plate sank since the loading started; load: the applied force (the plate's weight "
+        "not included); peak_force: the largest force the column exerted on the plate"] + summary))
+    for line in summary:
+        print(line)
+
+
 # --- timeseries -------------------------------------------------------------------------
 
 # The thermo columns of examples/column/in.column (and examples/silo), for --preset column.
@@ -747,6 +778,14 @@ def parser():
     p.add_argument("--vertical-within", type=float, default=30.0, help="degrees (default 30)")
     _common(p, bins=False)
     p.set_defaults(func=cmd_wire_contacts)
+
+    p = sub.add_parser("load-curves", help="load against the plate's sink (NAME.load_curve.txt), one line per "
+                                           "file, one colour per run")
+    p.add_argument("--run", action="append", required=True,
+                   help="LABEL=FILES (load-curve files, comma-separated names or glob patterns); repeat per run")
+    p.add_argument("--at", type=float, nargs="+", help="also the sink at these loads, per file and as mean +- sd")
+    p.add_argument("--out", "-o", required=True, help="output prefix: PREFIX.png and PREFIX.csv")
+    p.set_defaults(func=cmd_load_curves)
 
     p = sub.add_parser("timeseries", help="thermo columns of a log against each other")
     p.add_argument("log", nargs="+", help="LAMMPS log file(s); several: one run split by restarts, in order")

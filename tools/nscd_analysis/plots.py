@@ -175,6 +175,23 @@ def polar_histograms(rows):
     return fig
 
 
+def load_curves(lines):
+    """Load against the plate's sink: lines = [(run label, sink, load)], one colour per run."""
+    fig, ax = pyplot().subplots(figsize=(6.0, 4.2))
+    colours = {}
+    for label, down, load in lines:
+        first = label not in colours
+        colours.setdefault(label, f"C{len(colours) % 10}")
+        ax.plot(down, load, color=colours[label], lw=1.2, label=label if first else None)
+        ax.plot(down[-1:], load[-1:], "x", color=colours[label], ms=6)
+    ax.set_xlabel("sink of the plate since the loading started")
+    ax.set_ylabel("load on the plate")
+    ax.set_title("one line per seed; x: the last row (failure, or the run's end)", fontsize=9)
+    ax.legend()
+    fig.tight_layout()
+    return fig
+
+
 def series_panels(panels):
     """One panel per X: panels = [(x_name, y_names, data)], data's first column X, then the Ys."""
     fig, axes = pyplot().subplots(len(panels), 1, figsize=(6.0, 2.4 * len(panels)), squeeze=False)
