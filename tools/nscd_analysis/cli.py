@@ -266,10 +266,15 @@ def _labelled_snapshots(args):
         snaps = [s for pattern in args.dump for s in read_dumps([pattern], None, args.last)]
     else:
         snaps = read_dumps(args.dump, args.steps, args.last)
+    return snaps, _labels(args, snaps)
+
+
+def _labels(args, snaps):
+    """--labels, one per snapshot, or each snapshot's step."""
     labels = args.labels or [f"step {s.timestep}" for s in snaps]
     if len(labels) != len(snaps):
         raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
-    return snaps, labels
+    return labels
 
 
 def cmd_stress_profile(args):
@@ -342,13 +347,21 @@ def cmd_wire_breaks(args):
 
 # --- force-profile: the papers' Fig. 5 --------------------------------------------------
 
-def _dumps_or_runs(args):
-    """force-profile, wire-contacts: snapshot files, or --run groups of seeds, not both."""
+def _over_seeds(args):
+    """force-profile, wire-contacts: True for --run groups of seeds, False for snapshot files
+    (not both)."""
     if bool(args.dump) == bool(args.run):
         raise SystemExit(f"nscd-analysis {args.command}: give dump files, or --run LABEL=FILES (one file per "
                          "seed), not both")
     if args.run and args.labels:
         raise SystemExit(f"nscd-analysis {args.command}: --labels names snapshots; with --run the runs' LABELs do")
+    return bool(args.run)
+
+
+def _snapshots_and_labels(args):
+    """The dump files' snapshots in timestep order (--steps, --last) and their labels."""
+    snaps = read_dumps(args.dump, args.steps, args.last)
+    return snaps, _labels(args, snaps)
 
 
 def _force_profiles(args, snaps):
@@ -362,13 +375,9 @@ def _force_profiles(args, snaps):
 
 
 def cmd_force_profile(args):
-    _dumps_or_runs(args)
-    if args.run:
+    if _over_seeds(args):
         return _force_profile_over_seeds(args)
-    snaps = read_dumps(args.dump, args.steps, args.last)
-    labels = args.labels or [f"step {s.timestep}" for s in snaps]
-    if len(labels) != len(snaps):
-        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+    snaps, labels = _snapshots_and_labels(args)
     profiles = _force_profiles(args, snaps)
     r_edges = _r_edges(args, np.concatenate([p[2] for p in profiles]))
     rc = cylinder.centres(r_edges)
@@ -418,13 +427,9 @@ def _force_profile_over_seeds(args):
 # --- wire-contacts: the papers' Fig. 6 --------------------------------------------------
 
 def cmd_wire_contacts(args):
-    _dumps_or_runs(args)
-    if args.run:
+    if _over_seeds(args):
         return _wire_contacts_over_seeds(args)
-    snaps = read_dumps(args.dump, args.steps, args.last)
-    labels = args.labels or [f"step {s.timestep}" for s in snaps]
-    if len(labels) != len(snaps):
-        raise SystemExit(f"nscd-analysis: {len(labels)} labels for {len(snaps)} snapshots")
+    snaps, labels = _snapshots_and_labels(args)
     rows, summary, histograms = [], [], []
     for s, label in zip(snaps, labels):
         alpha, magnitude = _wire_orientations(args, s)

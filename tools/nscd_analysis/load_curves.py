@@ -17,6 +17,8 @@ largest force it felt."""
 
 import numpy as np
 
+from .tables import read_rows
+
 FIELDS = ("step", "load", "force", "displacement", "sink_over_window")
 
 
@@ -27,22 +29,10 @@ class LoadCurveError(ValueError):
 def read_load_curve(path):
     """n x 5 array (FIELDS) of a load-curve file, in its order. A line that is not 5 finite
     numbers is refused naming the file and line; so is a file without rows."""
-    rows = []
-    with open(path) as f:
-        for number, line in enumerate(f, 1):
-            text = line.strip()
-            if not text or text.startswith("#"):
-                continue
-            try:
-                values = [float(w) for w in text.split()]
-            except ValueError:
-                values = []
-            if len(values) != len(FIELDS) or not np.all(np.isfinite(values)):
-                raise LoadCurveError(f"{path}, line {number}: expected 5 numbers ({' '.join(FIELDS)}), got '{text}'")
-            rows.append(values)
-    if not rows:
+    curve = read_rows(path, FIELDS, LoadCurveError)
+    if not len(curve):
         raise LoadCurveError(f"{path}: no rows (the plate's phase did not start?)")
-    return np.array(rows, dtype=float)
+    return curve
 
 
 def sink(curve):

@@ -17,6 +17,7 @@ column's cylindrical coordinates."""
 import numpy as np
 
 from .cylinder import Cylindrical
+from .tables import read_rows
 
 FIELDS = ("step", "id1", "id2", "tension", "x", "y", "z")
 
@@ -28,21 +29,7 @@ class BreaksError(ValueError):
 def read_breaks(path):
     """n x 7 array (FIELDS) of a breaks file; an empty file (no break) gives 0 rows. A line
     that is not 7 numbers is refused naming the file and line."""
-    rows = []
-    with open(path) as f:
-        for number, line in enumerate(f, 1):
-            text = line.strip()
-            if not text or text.startswith("#"):
-                continue
-            words = text.split()
-            try:
-                values = [float(w) for w in words]
-            except ValueError:
-                values = []
-            if len(values) != len(FIELDS) or not np.all(np.isfinite(values)):
-                raise BreaksError(f"{path}, line {number}: expected 7 numbers ({' '.join(FIELDS)}), got '{text}'")
-            rows.append(values)
-    return np.array(rows, dtype=float).reshape(-1, len(FIELDS))
+    return read_rows(path, FIELDS, BreaksError)
 
 
 def positions_rz(breaks, axis):
