@@ -688,6 +688,17 @@ def _stress_ids(p):
     p.add_argument("--crush-id", default="crush", help="ID of compute nscd/crush/atom (default crush)")
 
 
+def _spread(p):
+    p.add_argument("--spread", choices=("grains", "seeds"), default="grains",
+                   help="error bars: standard error over the pooled grains (default), or seeds: each file "
+                        "of a run one seed, bars the standard deviation over them")
+
+
+def _seed_runs(p):
+    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
+                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
+
+
 def parser():
     top = argparse.ArgumentParser(prog="nscd-analysis", description=__doc__)
     sub = top.add_subparsers(dest="command", required=True)
@@ -710,9 +721,7 @@ def parser():
                    help="LABEL=FILES (comma-separated names or glob patterns); repeat per run")
     p.add_argument("--method", choices=("grains", "tensor"), default="grains",
                    help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
-    p.add_argument("--spread", choices=("grains", "seeds"), default="grains",
-                   help="error bars: standard error over the pooled grains (default), or seeds: each file "
-                        "of a run one seed, bars the standard deviation over them")
+    _spread(p)
     _common(p)
     p.set_defaults(func=cmd_fabric_angle)
 
@@ -730,9 +739,7 @@ def parser():
                    help="LABEL=FILES (comma-separated names or glob patterns); repeat per run")
     p.add_argument("--method", choices=("grains", "tensor"), default="grains",
                    help="plot the mean of per-grain angles (default) or the angle of the mean tensor")
-    p.add_argument("--spread", choices=("grains", "seeds"), default="grains",
-                   help="error bars: standard error over the pooled grains (default), or seeds: each file "
-                        "of a run one seed, bars the standard deviation over them")
+    _spread(p)
     _stress_ids(p)
     _common(p)
     p.set_defaults(func=cmd_stress_angle)
@@ -766,8 +773,7 @@ def parser():
 
     p = sub.add_parser("force-profile", help="Fig. 5: mean normal force between grains vs r")
     p.add_argument("dump", nargs="*", help="dump local files of compute nscd/contacts pairs")
-    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
-                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
+    _seed_runs(p)
     p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. the plate loads)")
     p.add_argument("--points", action="store_true", help="the dump has one row per point (no 'pairs')")
     _common(p)
@@ -775,8 +781,7 @@ def parser():
 
     p = sub.add_parser("wire-contacts", help="Fig. 6: polar histograms of wire-grain force orientations")
     p.add_argument("dump", nargs="*", help="dump local files of compute wire/contacts")
-    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
-                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
+    _seed_runs(p)
     p.add_argument("--labels", nargs="+", help="one label per snapshot (e.g. 'no load' 'Fz = 800')")
     p.add_argument("--bins", type=int, default=12, help="angular bins over 180 degrees (default 12)")
     p.add_argument("--kind", type=int, default=WIRE_GRAIN, help="contact kind: 1 wire-grain (default), 2, 3")
@@ -823,9 +828,7 @@ def parser():
     p.set_defaults(func=cmd_first_step)
 
     p = sub.add_parser("vtk-network", help="force network as .vtp line segments (one file per step)")
-    p.add_argument("dump", nargs="*", help="dump local files of compute nscd/contacts pairs")
-    p.add_argument("--run", action="append", help="LABEL=FILES, one file per seed (comma-separated names or glob "
-                                                   "patterns), repeat per run: the mean over the seeds, bars their sd")
+    p.add_argument("dump", nargs="+", help="dump local files of compute nscd/contacts pairs")
     p.add_argument("--out", "-o", required=True, help="writes OUT.<step>.vtp")
     p.add_argument("--steps", type=int, nargs="+")
     p.add_argument("--last", action="store_true")
