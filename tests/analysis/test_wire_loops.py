@@ -80,8 +80,14 @@ class Measures(unittest.TestCase):
         self.assertAlmostEqual(m["length"] / exact, 1.0, delta=1e-5)
         self.assertAlmostEqual(m["slack"], exact / (2.0 * math.pi * radius) - 1.0, delta=1e-5)
         self.assertGreater(m["slack"], 0.02)
-        # about the origin instead, the same ring spans no turn: its slack is undefined
-        self.assertTrue(math.isnan(wire_loops.loop_measures(points, closed=True)["slack"]))
+        self.assertAlmostEqual(m["offset"], 0.0, places=12)     # about its own centre
+        # about the origin instead, the same ring spans no turn: its slack is undefined, and
+        # its centre is (1, -3) off the axis
+        about_origin = wire_loops.loop_measures(points, closed=True)
+        self.assertTrue(math.isnan(about_origin["slack"]))
+        self.assertAlmostEqual(about_origin["x_offset"], 1.0, places=12)
+        self.assertAlmostEqual(about_origin["y_offset"], -3.0, places=12)
+        self.assertAlmostEqual(about_origin["offset"], math.sqrt(10.0), places=12)
 
 
 class Command(unittest.TestCase):
@@ -97,7 +103,8 @@ class Command(unittest.TestCase):
                                             [(100, synthetic.indexed("el", 5), second_elements + first_elements)],
                                             "ENTRIES")
             out = os.path.join(d, "loops")
-            with contextlib.redirect_stdout(io.StringIO()):
+            printed = io.StringIO()
+            with contextlib.redirect_stdout(printed):
                 self.assertEqual(cli.main(["wire-loops", "--elements", elements, "--nodes", nodes, "-o", out]), 0)
             with open(out + ".csv") as f:
                 rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
@@ -108,6 +115,14 @@ class Command(unittest.TestCase):
         self.assertAlmostEqual(float(rows[1]["r_median"]), 2.0, places=5)
         self.assertAlmostEqual(float(rows[1]["turns"]), 1.8, places=5)
         self.assertAlmostEqual(float(rows[1]["z_span"]), 1.8 * 0.12, places=5)
+        # the printed summary: the median of the loops' radii (2.25), not of another column
+        self.assertIn("median radius 2.250", printed.getvalue())
+        # the offset: the mean node position's distance from the axis (1.8 turns: not zero)
+        centre = np.array(first)[:, 1:3].mean(axis=0)
+        self.assertAlmostEqual(float(rows[0]["x_offset"]), centre[0], places=5)
+        self.assertAlmostEqual(float(rows[0]["y_offset"]), centre[1], places=5)
+        self.assertAlmostEqual(float(rows[0]["offset"]), float(np.hypot(*centre)), places=5)
+        self.assertGreater(float(rows[0]["offset"]), 0.1)
 
 
 if __name__ == "__main__":

@@ -633,7 +633,7 @@ def cmd_vtk_wire(args):
 
 # --- wire-loops: how taut each loop is ---------------------------------------------------
 
-LOOP_FIELDS = ("nodes", "z_mean", "z_span", "r_median", "turns", "length", "horizontal_length", "circle", "slack")
+LOOP_FIELDS = ("nodes", "x_offset", "y_offset", "offset", "z_mean", "z_span", "r_median", "turns", "length", "horizontal_length", "circle", "slack")
 
 
 def cmd_wire_loops(args):
@@ -643,23 +643,25 @@ def cmd_wire_loops(args):
         if not found:
             print(f"step {elements.timestep}: no wire elements")
             continue
-        step_rows = []
-        for path, closed in found:
-            m = wire_loops.loop_measures(nodes.positions_of(path, "wire node"), closed, args.axis)
-            step_rows.append([elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS])
-        rows += step_rows
-        series.append((elements.timestep, step_rows))
-        print(f"step {elements.timestep}: {len(step_rows)} chains, slack median "
-              f"{np.median([r[-1] for r in step_rows]):.3f} (min {min(r[-1] for r in step_rows):.3f}, "
-              f"max {max(r[-1] for r in step_rows):.3f}), median radius "
-              f"{np.median([r[5] for r in step_rows]):.3f}")
+        measures = [wire_loops.loop_measures(nodes.positions_of(path, "wire node"), closed, args.axis)
+                    for path, closed in found]
+        rows += [[elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS]
+                 for (path, closed), m in zip(found, measures)]
+        series.append((elements.timestep, measures))
+        slack = [m["slack"] for m in measures]
+        print(f"step {elements.timestep}: {len(measures)} chains, slack median {np.median(slack):.3f} "
+              f"(min {min(slack):.3f}, max {max(slack):.3f}), median radius "
+              f"{np.median([m['r_median'] for m in measures]):.3f}, centre offset median "
+              f"{np.median([m['offset'] for m in measures]):.3f} (max {max(m['offset'] for m in measures):.3f})")
     if not rows:
         raise SystemExit("nscd-analysis: no step with both element rows and node positions")
     print(_write_csv(args.out, ["step", "first_id", "kind"] + list(LOOP_FIELDS), rows,
                      [f"wire chains about the vertical axis through {tuple(args.axis)}; slack = length / "
-                      "(r_median x angle spanned) - 1"]))
-    fig = plots.wire_loops([(step, [r[-1] for r in step_rows], [r[5] for r in step_rows], [r[4] for r in step_rows])
-                            for step, step_rows in series])
+                      "(r_median x angle spanned) - 1; offset = distance of the chain's mean node "
+                      "position from the axis"]))
+    fig = plots.wire_loops([(step, [m["slack"] for m in measures], [m["r_median"] for m in measures],
+                             [m["offset"] for m in measures], [m["z_mean"] for m in measures])
+                            for step, measures in series])
     print(plots.save(fig, args.out))
 
 
@@ -836,7 +838,7 @@ def parser():
     p.add_argument("--reference-force", type=float, help="fn_norm = fn / this (default: the step's largest fn)")
     p.set_defaults(func=cmd_vtk_network)
 
-    p = sub.add_parser("wire-loops", help="how taut each wire loop is: radius, turns spanned, length, slack")
+    p = sub.add_parser("wire-loops", help="how taut each wire loop is: radius, turns spanned, length, slack, centre offset")
     p.add_argument("--elements", nargs="+", required=True, help="dump local files of compute wire/local")
     p.add_argument("--nodes", nargs="+", required=True, help="dump custom files with id x y z of the wire nodes")
     p.add_argument("--axis", type=float, nargs=2, default=(0.0, 0.0), metavar=("X", "Y"),

@@ -205,15 +205,17 @@ def series_panels(panels):
 
 
 def wire_loops(series):
-    """Slack and median radius of each loop against its height: series = [(step, slack,
-    radius, height)], one curve per step."""
-    fig, (left, right) = pyplot().subplots(1, 2, figsize=(9, 4), sharey=True)
-    for step, slack, radius, height in series:
+    """Slack, median radius and centre offset of each loop against its height: series =
+    [(step, slack, radius, offset, height)], one curve per step."""
+    fig, (left, middle, right) = pyplot().subplots(1, 3, figsize=(12, 4), sharey=True)
+    for step, slack, radius, offset, height in series:
         left.plot(slack, height, "o-", label=f"step {step}")
-        right.plot(radius, height, "o-", label=f"step {step}")
+        middle.plot(radius, height, "o-", label=f"step {step}")
+        right.plot(offset, height, "o-", label=f"step {step}")
     left.set_xlabel("slack (length / circle - 1)")
     left.set_ylabel("mean height of the loop")
-    right.set_xlabel("median radius of the loop")
+    middle.set_xlabel("median radius of the loop")
+    right.set_xlabel("offset of the loop's centre from the axis")
     left.legend(fontsize=8)
     fig.tight_layout()
     return fig

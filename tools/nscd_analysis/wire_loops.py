@@ -12,9 +12,10 @@
 
 """How taut the wire's loops are (nscd-analysis wire-loops): each chain of elements (a
 loop of the column) walked from end to end, with its median distance from the column axis,
-the turns it spans about the axis, its length, and its slack: how much longer it is than the
-circle of its median radius over the angle it spans. A loop with slack s lets the column
-widen by about s before it pulls."""
+the turns it spans about the axis, its length, its slack: how much longer it is than the
+circle of its median radius over the angle it spans, and its centre's offset from the axis.
+A loop with slack s lets the column widen by about s before it pulls; loops whose centres
+move off the axis together, more with height, are a column that leans."""
 
 import numpy as np
 
@@ -51,7 +52,8 @@ def chains(id1, id2):
 
 def loop_measures(points, closed, axis=(0.0, 0.0)):
     """Measures of one chain (points in path order, n x 3) about a vertical axis through
-    axis = (X, Y): a dict of nodes, z_mean, z_span (highest node minus lowest: how far the
+    axis = (X, Y): a dict of nodes, x_offset and y_offset (the mean node position less the
+    axis: where the loop's centre has moved), offset (its distance from the axis), z_mean, z_span (highest node minus lowest: how far the
     chain has warped out of a horizontal plane, a helix's own rise included), r_median, turns
     (signed turns spanned about the axis), length (sum of the element lengths, the closing one
     of a ring included), horizontal_length, circle (r_median times the angle spanned) and
@@ -69,7 +71,9 @@ def loop_measures(points, closed, axis=(0.0, 0.0)):
     nodes = len(points)
     r_median = float(np.median(r[:nodes]))
     circle = r_median * abs(spanned)
-    return {"nodes": nodes, "z_mean": float(z[:nodes].mean()), "z_span": float(np.ptp(z[:nodes])),
+    x_offset, y_offset = float(x[:nodes].mean()), float(y[:nodes].mean())
+    return {"nodes": nodes, "x_offset": x_offset, "y_offset": y_offset,
+            "offset": float(np.hypot(x_offset, y_offset)), "z_mean": float(z[:nodes].mean()), "z_span": float(np.ptp(z[:nodes])),
             "r_median": r_median,
             "turns": spanned / (2.0 * np.pi), "length": length, "horizontal_length": horizontal,
             "circle": circle, "slack": length / circle - 1.0 if circle > 0.0 else float("nan")}
