@@ -89,6 +89,18 @@ class Measures(unittest.TestCase):
         self.assertAlmostEqual(about_origin["y_offset"], -3.0, places=12)
         self.assertAlmostEqual(about_origin["offset"], math.sqrt(10.0), places=12)
 
+    def test_a_ring_beside_the_axis_spans_no_turn(self):
+        # a rough ring that has left the axis, crossing the azimuth's branch cut back and forth:
+        # its unwrapped azimuth returns to the start only to round-off (-8.9e-16 for this one),
+        # which made its slack 5e15 before a closed chain's turns were whole
+        rng = np.random.default_rng(3)
+        t = np.arange(94) * 2.0 * math.pi / 94
+        points = np.column_stack([-4.0 + 2.9 * np.cos(t), 2.9 * np.sin(t) + rng.normal(0.0, 0.1, 94), 0.0 * t])
+        m = wire_loops.loop_measures(points, closed=True)
+        self.assertEqual(m["turns"], 0.0)
+        self.assertTrue(math.isnan(m["slack"]))
+        self.assertAlmostEqual(m["offset"], 4.0, delta=0.05)
+
 
 class Command(unittest.TestCase):
     def test_one_row_per_loop_and_step(self):

@@ -648,9 +648,13 @@ def cmd_wire_loops(args):
         rows += [[elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS]
                  for (path, closed), m in zip(found, measures)]
         series.append((elements.timestep, measures))
-        slack = [m["slack"] for m in measures]
-        print(f"step {elements.timestep}: {len(measures)} chains, slack median {np.median(slack):.3f} "
-              f"(min {min(slack):.3f}, max {max(slack):.3f}), median radius "
+        slack = np.array([m["slack"] for m in measures])
+        undefined = int(np.isnan(slack).sum())    # chains that span no angle about the axis
+        slack_text = (f"slack median {np.nanmedian(slack):.3f} (min {np.nanmin(slack):.3f}, max {np.nanmax(slack):.3f})"
+                      if undefined < len(slack) else "slack undefined")
+        if undefined:
+            slack_text += f", {undefined} chains around no axis"
+        print(f"step {elements.timestep}: {len(measures)} chains, {slack_text}, median radius "
               f"{np.median([m['r_median'] for m in measures]):.3f}, centre offset median "
               f"{np.median([m['offset'] for m in measures]):.3f} (max {max(m['offset'] for m in measures):.3f})")
     if not rows:

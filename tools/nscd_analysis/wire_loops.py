@@ -56,8 +56,9 @@ def loop_measures(points, closed, axis=(0.0, 0.0)):
     axis: where the loop's centre has moved), offset (its distance from the axis), z_mean, z_span (highest node minus lowest: how far the
     chain has warped out of a horizontal plane, a helix's own rise included), r_median, turns
     (signed turns spanned about the axis), length (sum of the element lengths, the closing one
-    of a ring included), horizontal_length, circle (r_median times the angle spanned) and
-    slack (length / circle - 1)."""
+    of a ring included), horizontal_length, circle (r_median times the angle spanned: a closed
+    chain's is a whole number of turns, so a ring that no longer encloses the axis spans none
+    and its slack is nan) and slack (length / circle - 1)."""
     p = np.asarray(points, dtype=float)
     if closed:
         p = np.vstack([p, p[:1]])
@@ -68,6 +69,8 @@ def loop_measures(points, closed, axis=(0.0, 0.0)):
     horizontal = float(np.hypot(step[:, 0], step[:, 1]).sum())
     angle = np.unwrap(np.arctan2(y, x))
     spanned = float(angle[-1] - angle[0])
+    if closed:    # a closed chain winds a whole number of times (none: it has left the axis)
+        spanned = 2.0 * np.pi * round(spanned / (2.0 * np.pi))
     nodes = len(points)
     r_median = float(np.median(r[:nodes]))
     circle = r_median * abs(spanned)
