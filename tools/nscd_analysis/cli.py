@@ -647,7 +647,7 @@ def cmd_wire_loops(args):
                     for path, closed in found]
         rows += [[elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS]
                  for (path, closed), m in zip(found, measures)]
-        series.append((elements.timestep, measures))
+        series.append((elements.timestep, sorted(measures, key=lambda m: m["z_mean"])))    # drawn upwards
         slack = np.array([m["slack"] for m in measures])
         undefined = int(np.isnan(slack).sum())    # chains that span no angle about the axis
         slack_text = (f"slack median {np.nanmedian(slack):.3f} (min {np.nanmin(slack):.3f}, max {np.nanmax(slack):.3f})"
