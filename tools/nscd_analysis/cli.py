@@ -633,7 +633,8 @@ def cmd_vtk_wire(args):
 
 # --- wire-loops: how taut each loop is ---------------------------------------------------
 
-LOOP_FIELDS = ("nodes", "x_offset", "y_offset", "offset", "z_mean", "z_span", "r_median", "turns", "length", "horizontal_length", "circle", "slack")
+LOOP_FIELDS = ("nodes", "x_offset", "y_offset", "offset", "z_mean", "z_span", "r_median", "turns", "length",
+               "horizontal_length", "circle", "slack")
 
 
 def cmd_wire_loops(args):
@@ -650,8 +651,8 @@ def cmd_wire_loops(args):
         series.append((elements.timestep, sorted(measures, key=lambda m: m["z_mean"])))    # drawn upwards
         slack = np.array([m["slack"] for m in measures])
         undefined = int(np.isnan(slack).sum())    # chains that span no angle about the axis
-        slack_text = (f"slack median {np.nanmedian(slack):.3f} (min {np.nanmin(slack):.3f}, max {np.nanmax(slack):.3f})"
-                      if undefined < len(slack) else "slack undefined")
+        slack_text = (f"slack median {np.nanmedian(slack):.3f} (min {np.nanmin(slack):.3f}, "
+                      f"max {np.nanmax(slack):.3f})" if undefined < len(slack) else "slack undefined")
         if undefined:
             slack_text += f", {undefined} chains around no axis"
         print(f"step {elements.timestep}: {len(measures)} chains, {slack_text}, median radius "
@@ -842,7 +843,8 @@ def parser():
     p.add_argument("--reference-force", type=float, help="fn_norm = fn / this (default: the step's largest fn)")
     p.set_defaults(func=cmd_vtk_network)
 
-    p = sub.add_parser("wire-loops", help="how taut each wire loop is: radius, turns spanned, length, slack, centre offset")
+    p = sub.add_parser("wire-loops",
+                       help="how taut each wire loop is: radius, turns spanned, length, slack, centre offset")
     p.add_argument("--elements", nargs="+", required=True, help="dump local files of compute wire/local")
     p.add_argument("--nodes", nargs="+", required=True, help="dump custom files with id x y z of the wire nodes")
     p.add_argument("--axis", type=float, nargs=2, default=(0.0, 0.0), metavar=("X", "Y"),

@@ -53,8 +53,9 @@ def chains(id1, id2):
 def loop_measures(points, closed, axis=(0.0, 0.0)):
     """Measures of one chain (points in path order, n x 3) about a vertical axis through
     axis = (X, Y): a dict of nodes, x_offset and y_offset (the mean node position less the
-    axis: where the loop's centre has moved), offset (its distance from the axis), z_mean, z_span (highest node minus lowest: how far the
-    chain has warped out of a horizontal plane, a helix's own rise included), r_median, turns
+    axis: where the loop's centre has moved), offset (its distance from the axis), z_mean,
+    z_span (highest node minus lowest: how far the chain has warped out of a horizontal
+    plane, a helix's own rise included), r_median, turns
     (signed turns spanned about the axis), length (sum of the element lengths, the closing one
     of a ring included), horizontal_length, circle (r_median times the angle spanned: a closed
     chain's is a whole number of turns, so a ring that no longer encloses the axis spans none
@@ -76,7 +77,7 @@ def loop_measures(points, closed, axis=(0.0, 0.0)):
     circle = r_median * abs(spanned)
     x_offset, y_offset = float(x[:nodes].mean()), float(y[:nodes].mean())
     return {"nodes": nodes, "x_offset": x_offset, "y_offset": y_offset,
-            "offset": float(np.hypot(x_offset, y_offset)), "z_mean": float(z[:nodes].mean()), "z_span": float(np.ptp(z[:nodes])),
-            "r_median": r_median,
+            "offset": float(np.hypot(x_offset, y_offset)),
+            "z_mean": float(z[:nodes].mean()), "z_span": float(np.ptp(z[:nodes])), "r_median": r_median,
             "turns": spanned / (2.0 * np.pi), "length": length, "horizontal_length": horizontal,
             "circle": circle, "slack": length / circle - 1.0 if circle > 0.0 else float("nan")}
