@@ -88,6 +88,24 @@ class Measures(unittest.TestCase):
         self.assertAlmostEqual(about_origin["x_offset"], 1.0, places=12)
         self.assertAlmostEqual(about_origin["y_offset"], -3.0, places=12)
         self.assertAlmostEqual(about_origin["offset"], math.sqrt(10.0), places=12)
+        # about its own centre it is the same ring wherever the axis is
+        self.assertAlmostEqual(about_origin["own_r_median"], radius, places=9)
+        self.assertAlmostEqual(about_origin["own_slack"], m["slack"], places=9)
+
+    def test_a_ring_moved_off_the_axis_is_taut_about_its_own_centre(self):
+        # a flat regular 60-gon of circumradius 3 about (1.2, 0.5): it still encloses the
+        # axis, but its nodes' median distance from it exceeds 3 by far more than the ring's
+        # slack, so the slack about the axis goes negative; about its own centre the slack is
+        # the polygon's, 60 sin(pi / 60) / pi - 1
+        radius, nodes, centre = 3.0, 60, (1.2, 0.5)
+        t = np.arange(nodes) * 2.0 * math.pi / nodes
+        points = np.column_stack([centre[0] + radius * np.cos(t), centre[1] + radius * np.sin(t), 0.0 * t])
+        m = wire_loops.loop_measures(points, closed=True)
+        polygon = nodes * math.sin(math.pi / nodes) / math.pi - 1.0
+        self.assertEqual(m["turns"], 1.0)
+        self.assertLess(m["slack"], 10.0 * polygon)     # about the axis: -0.083, the polygon's -0.0005
+        self.assertAlmostEqual(m["own_r_median"], radius, places=12)
+        self.assertAlmostEqual(m["own_slack"], polygon, places=12)
 
     def test_a_ring_beside_the_axis_spans_no_turn(self):
         # a rough ring that has left the axis, crossing the azimuth's branch cut back and forth:
@@ -100,6 +118,8 @@ class Measures(unittest.TestCase):
         self.assertEqual(m["turns"], 0.0)
         self.assertTrue(math.isnan(m["slack"]))
         self.assertAlmostEqual(m["offset"], 4.0, delta=0.05)
+        self.assertTrue(math.isfinite(m["own_slack"]))    # about its own centre it is a ring
+        self.assertAlmostEqual(m["own_r_median"], 2.9, delta=0.1)
 
 
 class Command(unittest.TestCase):

@@ -634,7 +634,7 @@ def cmd_vtk_wire(args):
 # --- wire-loops: how taut each loop is ---------------------------------------------------
 
 LOOP_FIELDS = ("nodes", "x_offset", "y_offset", "offset", "z_mean", "z_span", "r_median", "turns", "length",
-               "horizontal_length", "circle", "slack")
+               "horizontal_length", "circle", "slack", "own_r_median", "own_slack")
 
 
 def cmd_wire_loops(args):
@@ -663,7 +663,7 @@ def cmd_wire_loops(args):
     print(_write_csv(args.out, ["step", "first_id", "kind"] + list(LOOP_FIELDS), rows,
                      [f"wire chains about the vertical axis through {tuple(args.axis)}; slack = length / "
                       "(r_median x angle spanned) - 1; offset = distance of the chain's mean node "
-                      "position from the axis"]))
+                      "position from the axis; own_r_median, own_slack: the same about the chain's own centre"]))
     fig = plots.wire_loops([(step, [m["slack"] for m in measures], [m["r_median"] for m in measures],
                              [m["offset"] for m in measures], [m["z_mean"] for m in measures])
                             for step, measures in series])

@@ -15,7 +15,9 @@ loop of the column) walked from end to end, with its median distance from the co
 the turns it spans about the axis, its length, its slack: how much longer it is than the
 circle of its median radius over the angle it spans, and its centre's offset from the axis.
 A loop with slack s lets the column widen by about s before it pulls; loops whose centres
-move off the axis together, more with height, are a column that leans."""
+move off the axis together, more with height, are a column that leans. For a loop that has
+moved off the axis the radius and slack about its own centre (own_r_median, own_slack) say
+whether it is still taut where those about the axis no longer can."""
 
 import numpy as np
 
@@ -59,7 +61,16 @@ def loop_measures(points, closed, axis=(0.0, 0.0)):
     (signed turns spanned about the axis), length (sum of the element lengths, the closing one
     of a ring included), horizontal_length, circle (r_median times the angle spanned: a closed
     chain's is a whole number of turns, so a ring that no longer encloses the axis spans none
-    and its slack is nan) and slack (length / circle - 1)."""
+    and its slack is nan), slack (length / circle - 1), and own_r_median and own_slack: the
+    same two about the vertical axis through the chain's own centre (its mean node)."""
+    m = _measures_about(points, closed, axis)
+    own = _measures_about(points, closed, (axis[0] + m["x_offset"], axis[1] + m["y_offset"]))
+    m["own_r_median"], m["own_slack"] = own["r_median"], own["slack"]
+    return m
+
+
+def _measures_about(points, closed, axis):
+    """loop_measures' fields but the own_ ones, about the vertical axis through axis."""
     p = np.asarray(points, dtype=float)
     if closed:
         p = np.vstack([p, p[:1]])
