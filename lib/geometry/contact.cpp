@@ -452,7 +452,8 @@ std::size_t ContactWorkspace::memory_bytes() const
          capacity_bytes(normals_j) + capacity_bytes(offsets_i) + capacity_bytes(offsets_j) + capacity_bytes(polygon) +
          capacity_bytes(clipped) + capacity_bytes(candidates) + capacity_bytes(arcs_i) + capacity_bytes(arcs_j) +
          capacity_bytes(edges_near_i) + capacity_bytes(edges_near_j) + capacity_bytes(marks_ref) +
-         capacity_bytes(marks_inc) + capacity_bytes(near_faces);
+         capacity_bytes(marks_inc) + capacity_bytes(near_faces) + capacity_bytes(near_sides) +
+         capacity_bytes(vertex_rows) + capacity_bytes(marks_measured);
 }
 
 }    // namespace nscd

@@ -161,6 +161,9 @@ class ContactWorkspace {
   std::vector<int> edges_near_i, edges_near_j;  // edges close enough to the other core
   std::vector<char> marks_ref, marks_inc;       // vertices of the closest features
   std::vector<int> near_faces;                  // faces through them
+  std::vector<Vec3> near_sides;                 // their sides' outward normals, loop by loop
+  std::vector<double> vertex_rows;              // each vertex's heights and distances beside them
+  std::vector<char> marks_measured;             // the vertices measured so far
 
   // Bytes its buffers hold (their capacities), for the LAMMPS styles' memory_usage().
   std::size_t memory_bytes() const;

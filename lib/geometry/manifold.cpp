@@ -336,35 +336,45 @@ void add_vertices_over_faces(const Core &ref, const Core &inc, bool ref_is_a, co
   }
 }
 
-// The part of segment p0-p1 over face f of `ref` (inside its side planes): parameters
-// [lo, hi] along the segment and the side crossed at each end (-1: the segment's own end).
-// Returns false when no part of it is over the face.
+// The part of an edge over a face of `ref` (inside its m side planes), from its ends'
+// distances d0[k], d1[k] beside side k (> 0: outside): parameters [lo, hi] along the edge
+// and the side crossed at each end (-1: the edge's own end). Returns false when no part of
+// it is over the face.
 struct OverFace {
   double lo = 0.0, hi = 1.0;
   int side_lo = -1, side_hi = -1;
 };
 
-bool clip_to_face(const Core &ref, int f, const Vec3 &p0, const Vec3 &p1, OverFace &out)
+bool clip_to_face(int m, const double *d0, const double *d1, OverFace &out)
 {
-  const auto &loop = ref.shape->faces[f].vertices;
-  const int m = static_cast<int>(loop.size());
   out = OverFace{};
   for (int k = 0; k < m; ++k) {
-    const Vec3 &r0 = ref.vertices[loop[k]], &r1 = ref.vertices[loop[(k + 1) % m]];
-    const Vec3 outward = (r1 - r0).cross(ref.normals[f]);    // counter-clockwise loop
-    const double d0 = outward.dot(p0 - r0), d1 = outward.dot(p1 - r0);
-    if (d0 > 0.0 && d1 > 0.0) return false;
-    if (d0 <= 0.0 && d1 <= 0.0) continue;
-    const double t = d0 / (d0 - d1);
-    if (d0 > 0.0 && t > out.lo) {
+    if (d0[k] > 0.0 && d1[k] > 0.0) return false;
+    if (d0[k] <= 0.0 && d1[k] <= 0.0) continue;
+    const double t = d0[k] / (d0[k] - d1[k]);
+    if (d0[k] > 0.0 && t > out.lo) {
       out.lo = t;
       out.side_lo = k;
-    } else if (d0 <= 0.0 && t < out.hi) {
+    } else if (d0[k] <= 0.0 && t < out.hi) {
       out.hi = t;
       out.side_hi = k;
     }
   }
   return out.lo < out.hi;
+}
+
+// Where vertex p of `inc` lies against the faces of `ref` in `faces`: its height over each
+// face's plane, then its distance beside each side of each face in turn (`sides`: their
+// outward normals, loop by loop). Written to row.
+void measure_vertex(const Core &ref, const std::vector<int> &faces, const std::vector<Vec3> &sides,
+                    const Vec3 &p, double *row)
+{
+  double *beside = row + faces.size();
+  const Vec3 *outward = sides.data();
+  for (const int f : faces) {
+    *row++ = ref.normals[f].dot(p) - ref.offsets[f];
+    for (const int corner : ref.shape->faces[f].vertices) *beside++ = (*outward++).dot(p - ref.vertices[corner]);
+  }
 }
 
 // One point per key: the same pair of edges is found from a face of either core; the nearer
@@ -416,6 +426,23 @@ void mark_feature_vertices(const Core &core, std::uint32_t feature, std::vector<
   }
 }
 
+// The faces of `ref` through a marked vertex, and the outward normals of their sides (not
+// unit), loop by loop.
+void collect_near_faces(const Core &ref, const std::vector<char> &marked, std::vector<int> &faces,
+                        std::vector<Vec3> &sides)
+{
+  faces.clear();
+  sides.clear();
+  for (int f = 0; f < ref.face_count(); ++f) {
+    const auto &loop = ref.shape->faces[f].vertices;
+    if (std::none_of(loop.begin(), loop.end(), [&](int v) { return marked[v] != 0; })) continue;
+    faces.push_back(f);
+    const int m = static_cast<int>(loop.size());
+    for (int k = 0; k < m; ++k)    // counter-clockwise loop
+      sides.push_back((ref.vertices[loop[(k + 1) % m]] - ref.vertices[loop[k]]).cross(ref.normals[f]));
+  }
+}
+
 // Every edge of `inc` at the closest features crossing the border of a face of `ref` at the
 // closest features, within the speculative limit: a point where it crosses (the edge
 // counterpart of the vertices over faces). A grain lying almost edge-on across a
@@ -445,12 +472,21 @@ void add_edges_over_faces(const Core &ref, const Core &inc, bool ref_is_a, std::
     mark_feature_vertices(ref, ref_is_a ? key_feature_i(key) : key_feature_j(key), at_ref);
     mark_feature_vertices(inc, ref_is_a ? key_feature_j(key) : key_feature_i(key), at_inc);
   }
-  std::vector<int> &faces = ws.near_faces;
-  faces.clear();
-  for (int f = 0; f < ref.face_count(); ++f) {
-    const auto &loop = ref.shape->faces[f].vertices;
-    if (std::any_of(loop.begin(), loop.end(), [&](int v) { return at_ref[v] != 0; })) faces.push_back(f);
-  }
+  collect_near_faces(ref, at_ref, ws.near_faces, ws.near_sides);
+  const std::vector<int> &faces = ws.near_faces;
+  const std::vector<Vec3> &sides = ws.near_sides;
+  // Each vertex of inc measured against them once, when an edge first needs it: every edge
+  // through it meets every near face (measured per edge and face, the clipping alone was
+  // half of this function's time, perf).
+  const std::size_t face_n = faces.size(), row = face_n + sides.size();
+  ws.vertex_rows.resize(static_cast<std::size_t>(inc.count) * row);
+  ws.marks_measured.assign(inc.count, 0);
+  auto measured = [&](int v) {
+    double *r = ws.vertex_rows.data() + static_cast<std::size_t>(v) * row;
+    if (!ws.marks_measured[v]) measure_vertex(ref, faces, sides, inc.vertices[v], r);
+    ws.marks_measured[v] = 1;
+    return static_cast<const double *>(r);
+  };
   const double tol = Tolerance::kClip * in.length_scale;
   const double radii = ref.radius + inc.radius, limit = speculative_limit(in);
   // Cores apart: no point of inc is nearer to ref than `nearest`, so an edge wholly lower
@@ -459,15 +495,20 @@ void add_edges_over_faces(const Core &ref, const Core &inc, bool ref_is_a, std::
   for (const auto &edge : inc.shape->edges) {
     if (!at_inc[edge[0]] && !at_inc[edge[1]]) continue;
     const Vec3 &p0 = inc.vertices[edge[0]], &p1 = inc.vertices[edge[1]];
-    for (const int f : faces) {
+    const double *row0 = measured(edge[0]), *row1 = measured(edge[1]);
+    std::size_t side0 = face_n;    // the face's first side in a row
+    for (std::size_t fi = 0; fi < face_n; ++fi) {
+      const int f = faces[fi];
       const auto &loop = ref.shape->faces[f].vertices;
-      const Vec3 &n = ref.normals[f];
-      const double h0 = n.dot(p0) - ref.offsets[f], h1 = n.dot(p1) - ref.offsets[f];
+      const int m = static_cast<int>(loop.size());
+      const double *beside0 = row0 + side0, *beside1 = row1 + side0;
+      side0 += m;
+      const double h0 = row0[fi], h1 = row1[fi];
       OverFace over;
       if (std::min(h0, h1) - radii > limit || std::max(h0, h1) - radii < lowest ||
-          !clip_to_face(ref, f, p0, p1, over))
+          !clip_to_face(m, beside0, beside1, over))
         continue;
-      const int m = static_cast<int>(loop.size());
+      const Vec3 &n = ref.normals[f];
       for (const auto &[s, side] : {std::pair(over.lo, over.side_lo), std::pair(over.hi, over.side_hi)}) {
         if (side < 0) continue;    // the edge's own end: a vertex over the face
         const Vec3 p = p0 + s * (p1 - p0);
