@@ -20,6 +20,8 @@
 #include "atom_vec_spheropolyhedron.h"
 #include "nscd_args.h"
 #include "nscd_arrays.h"
+#include "nscd_boundary.h"
+#include "nscd_boundary_fix.h"
 #include "nscd_gather.h"
 #include "nscd_new_atoms.h"
 
@@ -27,6 +29,8 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "modify.h"
+#include "fix.h"
 #include "region.h"
 #include "utils.h"
 
@@ -86,11 +90,13 @@ void CreateGrains::command(int narg, char **arg)
   r.region->prematch();
 
   std::vector<Placed> fixed = gather_grains_near_region();
+  const std::vector<NSCDBoundary *> walls = walls_of_new_grains();
   std::vector<Candidate> accepted;
   std::vector<Placed> placed;
-  bigint tried = 0, hit_old = 0, hit_new = 0, outside = 0;
+  bigint tried = 0, hit_wall = 0, hit_old = 0, hit_new = 0, outside = 0;
   auto try_site = [&](const Candidate &c) {
     tried++;
+    if (deepest_wall_overlap(c, walls) > -r.gap) return hit_wall++, void();
     if (deepest_overlap(c, fixed) > -r.gap) return hit_old++, void();
     if (deepest_overlap(c, placed) > -r.gap) return hit_new++, void();
     accepted.push_back(c);
@@ -114,9 +120,9 @@ void CreateGrains::command(int narg, char **arg)
     std::string where = r.layout == Request::Layout::lattice
         ? fmt::format("{} lattice sites", tried)
         : fmt::format("{} random positions in the region ({} more fell outside it; {} wanted)", tried, outside, r.count);
-    utils::logmesg(lmp, "create_grains: {} grains placed in region {} from {}; rejected: {} overlapping grains "
-                   "already there, {} overlapping grains placed now (gap {})\n", accepted.size(), r.region->id,
-                   where, hit_old, hit_new, r.gap);
+    utils::logmesg(lmp, "create_grains: {} grains placed in region {} from {}; rejected: {} overlapping a wall, "
+                   "{} overlapping grains already there, {} overlapping grains placed now (gap {})\n", accepted.size(),
+                   r.region->id, where, hit_wall, hit_old, hit_new, r.gap);
   }
   if (r.layout == Request::Layout::random && (bigint) accepted.size() < r.count)
     error->warning(FLERR, "create_grains: placed {} of {} grains in {} tries (region too full); give more "
@@ -291,6 +297,38 @@ double CreateGrains::deepest_overlap(const Candidate &c, const std::vector<Place
         deepest = std::max(deepest, -p.gap);
     } catch (std::exception &e) {
       error->one(FLERR, "create_grains: the overlap test of site {} failed: {}", c.index, e.what());
+    }
+  }
+  return deepest;
+}
+
+/* The walls and plates (fix nscd/wall, fix nscd/plate) of group all: the only ones a grain
+   belongs to when it is created. A grain placed into one would keep that overlap (contacts
+   stop it from growing, they do not push it out). */
+std::vector<NSCDBoundary *> CreateGrains::walls_of_new_grains() const
+{
+  std::vector<NSCDBoundary *> walls;
+  for (Fix *fix : modify->get_fix_list()) {
+    auto *boundary_fix = dynamic_cast<NSCDBoundaryFix *>(fix);
+    if (boundary_fix && fix->igroup == 0) walls.push_back(&boundary_fix->boundary());
+  }
+  return walls;
+}
+
+/* The candidate's deepest overlap with any of the walls (negative: the smallest gap within
+   the gap allowed; -infinity when none is that near), from the walls' own contact geometry. */
+double CreateGrains::deepest_wall_overlap(const Candidate &c, const std::vector<NSCDBoundary *> &walls) const
+{
+  const nscd::Spheropolyhedron &shape = avec->shapes().shape(c.grain.shape);
+  nscd::Pose pose;
+  pose.position = vec3(c.grain.x);
+  pose.orientation = quat_of(c.grain.q);
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (NSCDBoundary *wall : walls) {
+    try {
+      deepest = std::max(deepest, wall->deepest_overlap(shape, pose, request->gap));
+    } catch (std::exception &e) {
+      error->one(FLERR, "create_grains: the wall overlap test of site {} failed: {}", c.index, e.what());
     }
   }
   return deepest;

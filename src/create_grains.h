@@ -33,6 +33,9 @@ CommandStyle(create_grains,CreateGrains);
 #include <vector>
 
 namespace LAMMPS_NS {
+namespace NSCD_NS {
+class NSCDBoundary;
+}
 
 class CreateGrains : public Command {
  public:
@@ -53,6 +56,8 @@ class CreateGrains : public Command {
   Candidate draw(long index, const double x[3]) const;
   bool random_site(long index, double x[3]) const;
   double deepest_overlap(const Candidate &c, const std::vector<Placed> &grains) const;
+  std::vector<NSCD_NS::NSCDBoundary *> walls_of_new_grains() const;
+  double deepest_wall_overlap(const Candidate &c, const std::vector<NSCD_NS::NSCDBoundary *> &walls) const;
   void create(const std::vector<Candidate> &accepted);
 };
 

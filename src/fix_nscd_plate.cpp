@@ -33,6 +33,7 @@
 #include "shape/spheropolyhedron.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -61,6 +62,7 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
   nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
   nscd::Vec3 surface_velocity() const override { return nscd::Vec3(0.0, 0.0, vz); }
   double friction_coefficient() const override { return friction; }
+  double deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within) override;
 
   double load() const { return load_start + load_rate * elapsed; }
   double force_on_plate() const { return reaction + wire_force_in(fix.update->ntimestep).z(); }
@@ -207,6 +209,15 @@ nscd::SolverBody FixNSCDPlate::Plate::body(double dt) const
   const double wire = wire_force_in(fix.update->ntimestep).z();    // the wire pushing up on it
   b.external_impulse = nscd::Vec3(0.0, 0.0, dt * (wire - load_at_end - mass * gravity));
   return b;
+}
+
+double FixNSCDPlate::Plate::deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within)
+{
+  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z), nscd::Vec3(0.0, 0.0, -1.0)};
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const nscd::ContactPoint &p : nscd::contact_grain_plane(shape, pose, face, within, workspace))
+    deepest = std::max(deepest, -p.gap);
+  return deepest;
 }
 
 nscd::ContactPoint FixNSCDPlate::Plate::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const

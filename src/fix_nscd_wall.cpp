@@ -30,6 +30,7 @@
 #include "update.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstring>
 
@@ -57,6 +58,7 @@ class FixNSCDWall::Wall final : public NSCDBoundary {
   nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const override;
   nscd::Vec3 surface_velocity() const override { return velocity; }
   double friction_coefficient() const override { return friction; }
+  double deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within) override;
 
   bool inside(const nscd::Vec3 &x) const;
   nscd::Vec3 &reference_point() { return kind == Kind::plane ? plane.point : cylinder.axis_point; }
@@ -197,14 +199,11 @@ void FixNSCDWall::warn_about_grains_in_the_wall()
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit) || wall->avec->shape[i] == 0) continue;
     const nscd::Spheropolyhedron &shape = wall->avec->shape_of(i);
-    const nscd::ContactSet set = wall->kind == Wall::Kind::plane
-        ? nscd::contact_grain_plane(shape, wall->avec->pose(i), wall->plane, 0.0, wall->workspace)
-        : nscd::contact_grain_cylinder(shape, wall->avec->pose(i), wall->cylinder, 0.0, wall->workspace);
-    for (const nscd::ContactPoint &p : set)
-      if (-p.gap / shape.bounding_radius > mine.share) {
-        mine.share = -p.gap / shape.bounding_radius;
-        found[0] = -p.gap, found[1] = (double) atom->tag[i], found[2] = shape.bounding_radius;
-      }
+    const double depth = wall->deepest_overlap(shape, wall->avec->pose(i), 0.0);
+    if (depth / shape.bounding_radius > mine.share) {
+      mine.share = depth / shape.bounding_radius;
+      found[0] = depth, found[1] = (double) atom->tag[i], found[2] = shape.bounding_radius;
+    }
   }
   MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
   if (!(worst.share > 0.2)) return;
@@ -217,6 +216,16 @@ void FixNSCDWall::warn_about_grains_in_the_wall()
   else
     error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall "
                    "at the start; place it in front", id, (tagint) found[1], found[0]);
+}
+
+double FixNSCDWall::Wall::deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within)
+{
+  const nscd::ContactSet set = kind == Kind::plane
+      ? nscd::contact_grain_plane(shape, pose, plane, within, workspace)
+      : nscd::contact_grain_cylinder(shape, pose, cylinder, within, workspace);
+  double deepest = -std::numeric_limits<double>::infinity();
+  for (const nscd::ContactPoint &p : set) deepest = std::max(deepest, -p.gap);
+  return deepest;
 }
 
 bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const

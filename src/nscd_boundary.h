@@ -59,6 +59,11 @@ class NSCDBoundary {
   virtual nscd::ContactPoint touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const = 0;
   virtual nscd::Vec3 surface_velocity() const = 0;
   virtual double friction_coefficient() const = 0;
+  // The deepest overlap of a grain in `pose` with the boundary as it stands, over the points
+  // of their contact with a gap up to `within` (negative: the smallest gap; -infinity when
+  // none is that near). For create_grains, which leaves out grains placed into a boundary,
+  // and the boundaries' own start-of-run checks.
+  virtual double deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within) = 0;
 
   // The force of the wire on the boundary in step `step`, averaged over its substeps and
   // summed over the ranks: fix wire gives it on every rank in post_force, before fix nscd

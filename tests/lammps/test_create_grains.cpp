@@ -188,6 +188,92 @@ TEST_F(CreateGrainsTest, GapKeepsSurfacesApart)
   EXPECT_GE(smallest, 0.1);
 }
 
+// Walls of group all (fix nscd/wall, plane and cylinder) defined before create_grains: a
+// grain reaching into one is left out, counted as such, and every grain made has its
+// surface in front of every wall (the walls' own contact geometry, on every grain). The same
+// fills without the walls do make grains reaching through them (else the test shows
+// nothing), and a wall of another group is not tested.
+TEST_F(CreateGrainsTest, GrainsAreNotPlacedIntoWalls)
+{
+  const nscd::PlaneWall side{nscd::Vec3(2.0, 0.0, 0.0), nscd::Vec3(-1.0, 0.0, 0.0)};
+  const nscd::CylinderWall silo{nscd::Vec3(0.0, 0.0, 0.0), nscd::Vec3(0.0, 0.0, 1.0), 2.2};
+  const std::vector<std::string> fills = {
+      "region a block -3 3 -3 3 0.9 2.5 units box", "create_grains 1 a shape 1 24 density 1 seed 7 lattice 1.6",
+      "region c cylinder z 0 0 2.2 2.6 4.5 units box", "create_grains 1 c shape 1 24 density 1 seed 9 lattice 1.2"};
+  // the deepest reach of a created grain (by ID range) into the wall
+  auto deepest_into = [&](auto contact, bigint from, bigint to) {
+    auto *avec = AtomVecSpheropolyhedron::find(lmp, "test");
+    const std::vector<double> all = rows(lmp, MPI_COMM_WORLD);
+    nscd::ContactWorkspace workspace;
+    double deepest = -1e30;
+    for (bigint t = from; t < to; t++) {
+      const double *row = &all[kFields * t];
+      nscd::Pose pose;
+      pose.position = nscd::Vec3(row[0], row[1], row[2]);
+      pose.orientation = nscd::Quat(row[3], row[4], row[5], row[6]);
+      for (const auto &p : contact(avec->shapes().shape((int) row[7]), pose, workspace)) deepest = std::max(deepest, -p.gap);
+    }
+    return deepest;
+  };
+  auto into_side = [&](const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, nscd::ContactWorkspace &ws) {
+    return nscd::contact_grain_plane(shape, pose, side, 0.0, ws);
+  };
+  auto into_silo = [&](const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, nscd::ContactWorkspace &ws) {
+    return nscd::contact_grain_cylinder(shape, pose, silo, 0.0, ws);
+  };
+
+  // without walls: grains reach through where the walls will stand
+  commands(box_lines("processors * * *"));
+  commands({fills[0], fills[1]});
+  const bigint layer_without = lmp->atom->natoms;
+  commands({fills[2], fills[3]});
+  EXPECT_GT(deepest_into(into_side, 0, layer_without), 0.1);
+  EXPECT_GT(deepest_into(into_silo, layer_without, lmp->atom->natoms), 0.1);
+
+  // with them: left out, counted, none reaching in
+  restart_instance();
+  commands(box_lines("processors * * *"));
+  commands({"fix side all nscd/wall plane 2 0 0 -1 0 0", "fix silo all nscd/wall cylinder 0 0 0 0 0 1 2.2",
+            "group other type 2", "fix elsewhere other nscd/wall plane 0 0 1.8 0 0 1", fills[0]});
+  const std::string log = log_of(fills[1]);
+  EXPECT_EQ(log.find(" 0 overlapping a wall"), std::string::npos) << log;
+  EXPECT_NE(log.find("overlapping a wall"), std::string::npos) << log;
+  const bigint layer = lmp->atom->natoms;
+  ASSERT_GT(layer, 10);
+  EXPECT_LT(layer, layer_without);
+  commands({fills[2], fills[3]});
+  ASSERT_GT(lmp->atom->natoms, layer + 5);
+  EXPECT_LE(deepest_into(into_side, 0, lmp->atom->natoms), 0.0);
+  EXPECT_LE(deepest_into(into_silo, layer, lmp->atom->natoms), 0.0);
+  // the floor of group `other` (at z 1.8, inside the first layer) did not keep grains out
+  auto below_floor = [&](const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, nscd::ContactWorkspace &ws) {
+    return nscd::contact_grain_plane(shape, pose, nscd::PlaneWall{nscd::Vec3(0.0, 0.0, 1.8), nscd::Vec3(0.0, 0.0, 1.0)}, 0.0, ws);
+  };
+  EXPECT_GT(deepest_into(below_floor, 0, layer), 0.1);
+}
+
+// The loading plate is a boundary too: no grain is made reaching above it.
+TEST_F(CreateGrainsTest, GrainsAreNotPlacedIntoThePlate)
+{
+  commands(box_lines("processors * * *"));
+  commands({"fix plate all nscd/plate 2 mass 1", "region a block -3 3 -3 3 0.9 2.5 units box"});
+  const std::string log = log_of("create_grains 1 a shape 1 24 density 1 seed 7 lattice 1.6");
+  EXPECT_EQ(log.find(" 0 overlapping a wall"), std::string::npos) << log;
+  ASSERT_GT(lmp->atom->natoms, 5);    // the lower plane's grains (the upper plane, at z 1.7, reaches it)
+  auto *avec = AtomVecSpheropolyhedron::find(lmp, "test");
+  const std::vector<double> all = rows(lmp, MPI_COMM_WORLD);
+  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, 2.0), nscd::Vec3(0.0, 0.0, -1.0)};
+  nscd::ContactWorkspace workspace;
+  for (bigint t = 0; t < lmp->atom->natoms; t++) {
+    const double *row = &all[kFields * t];
+    nscd::Pose pose;
+    pose.position = nscd::Vec3(row[0], row[1], row[2]);
+    pose.orientation = nscd::Quat(row[3], row[4], row[5], row[6]);
+    for (const auto &p : nscd::contact_grain_plane(avec->shapes().shape((int) row[7]), pose, face, 0.0, workspace))
+      EXPECT_GE(p.gap, 0.0) << "atom ID " << t + 1;
+  }
+}
+
 TEST_F(CreateGrainsTest, RefusalsNameTheValue)
 {
   commands(box_lines("processors * * *"));
