@@ -29,8 +29,8 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "modify.h"
 #include "fix.h"
+#include "modify.h"
 #include "region.h"
 #include "utils.h"
 

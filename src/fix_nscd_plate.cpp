@@ -33,10 +33,10 @@
 #include "shape/spheropolyhedron.h"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
 #include <cstring>
 #include <deque>
+#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace NSCD_NS;
