@@ -293,8 +293,8 @@ double CreateGrains::deepest_overlap(const Candidate &c, const std::vector<Place
     other_pose.position = vec3(g.x);
     other_pose.orientation = quat_of(g.q);
     try {
-      for (const nscd::ContactPoint &p : nscd::contact_grains(shape, pose, other, other_pose, r.gap, workspace, 0.0))
-        deepest = std::max(deepest, -p.gap);
+      const nscd::ContactSet set = nscd::contact_grains(shape, pose, other, other_pose, r.gap, workspace, 0.0);
+      deepest = std::max(deepest, set.deepest_overlap());
     } catch (std::exception &e) {
       error->one(FLERR, "create_grains: the overlap test of site {} failed: {}", c.index, e.what());
     }

@@ -36,7 +36,6 @@
 #include <cmath>
 #include <cstring>
 #include <deque>
-#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace NSCD_NS;
@@ -64,6 +63,8 @@ class FixNSCDPlate::Plate final : public NSCDBoundary {
   double friction_coefficient() const override { return friction; }
   double deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within) override;
 
+  // Its underside at height h, facing the grains below.
+  static nscd::PlaneWall face_at(double h) { return {nscd::Vec3(0.0, 0.0, h), nscd::Vec3(0.0, 0.0, -1.0)}; }
   double load() const { return load_start + load_rate * elapsed; }
   double force_on_plate() const { return reaction + wire_force_in(fix.update->ntimestep).z(); }
   double window_sink() const { return heights.empty() ? 0.0 : heights.front() - heights.back(); }
@@ -175,7 +176,7 @@ void FixNSCDPlate::setup(int /*vflag*/)
 
 void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)
 {
-  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z), nscd::Vec3(0.0, 0.0, -1.0)};
+  const nscd::PlaneWall face = face_at(z);
   const ContactLaw law{friction, restitution};
   Atom *atom = fix.atom;
   for (int i = 0; i < atom->nlocal; i++) {
@@ -213,16 +214,12 @@ nscd::SolverBody FixNSCDPlate::Plate::body(double dt) const
 
 double FixNSCDPlate::Plate::deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within)
 {
-  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z), nscd::Vec3(0.0, 0.0, -1.0)};
-  double deepest = -std::numeric_limits<double>::infinity();
-  for (const nscd::ContactPoint &p : nscd::contact_grain_plane(shape, pose, face, within, workspace))
-    deepest = std::max(deepest, -p.gap);
-  return deepest;
+  return nscd::contact_grain_plane(shape, pose, face_at(z), within, workspace).deepest_overlap();
 }
 
 nscd::ContactPoint FixNSCDPlate::Plate::touch_sphere(const nscd::Vec3 &centre, double radius, double tau) const
 {
-  const nscd::PlaneWall face{nscd::Vec3(0.0, 0.0, z + tau * vz), nscd::Vec3(0.0, 0.0, -1.0)};
+  const nscd::PlaneWall face = face_at(z + tau * vz);
   return nscd::contact_sphere_plane(centre, radius, face);
 }
 

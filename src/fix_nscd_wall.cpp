@@ -32,7 +32,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
 
 using namespace LAMMPS_NS;
 using namespace NSCD_NS;
@@ -59,6 +58,8 @@ class FixNSCDWall::Wall final : public NSCDBoundary {
   nscd::Vec3 surface_velocity() const override { return velocity; }
   double friction_coefficient() const override { return friction; }
   double deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within) override;
+  // The wall's contact with a grain (its kind's geometry), points up to the activation gap.
+  nscd::ContactSet contact_with(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double activation);
 
   bool inside(const nscd::Vec3 &x) const;
   nscd::Vec3 &reference_point() { return kind == Kind::plane ? plane.point : cylinder.axis_point; }
@@ -220,12 +221,14 @@ void FixNSCDWall::warn_about_grains_in_the_wall()
 
 double FixNSCDWall::Wall::deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within)
 {
-  const nscd::ContactSet set = kind == Kind::plane
-      ? nscd::contact_grain_plane(shape, pose, plane, within, workspace)
-      : nscd::contact_grain_cylinder(shape, pose, cylinder, within, workspace);
-  double deepest = -std::numeric_limits<double>::infinity();
-  for (const nscd::ContactPoint &p : set) deepest = std::max(deepest, -p.gap);
-  return deepest;
+  return contact_with(shape, pose, within).deepest_overlap();
+}
+
+nscd::ContactSet FixNSCDWall::Wall::contact_with(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose,
+                                                double activation)
+{
+  return kind == Kind::plane ? nscd::contact_grain_plane(shape, pose, plane, activation, workspace)
+                             : nscd::contact_grain_cylinder(shape, pose, cylinder, activation, workspace);
 }
 
 bool FixNSCDWall::Wall::inside(const nscd::Vec3 &x) const
@@ -245,9 +248,7 @@ void FixNSCDWall::Wall::append_contacts(std::vector<nscd::Contact> &contacts, do
     const double activation = speculative_activation(base, closing, dt);
     nscd::ContactSet set;
     try {
-      set = kind == Kind::plane
-          ? nscd::contact_grain_plane(avec->shape_of(i), avec->pose(i), plane, activation, workspace)
-          : nscd::contact_grain_cylinder(avec->shape_of(i), avec->pose(i), cylinder, activation, workspace);
+      set = contact_with(avec->shape_of(i), avec->pose(i), activation);
     } catch (std::exception &e) {
       fix.error->one(FLERR, "fix nscd/wall {}: contact with grain ID {} failed: {}", fix.id,
                      atom->tag[i], e.what());

@@ -33,6 +33,7 @@
 #include "math/types.h"
 #include "shape/spheropolyhedron.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -72,6 +73,13 @@ struct ContactSet {
   const ContactPoint *begin() const { return points.data(); }
   const ContactPoint *end() const { return points.data() + count; }
   const ContactPoint &operator[](int k) const { return points[k]; }
+  // The deepest overlap of its points (minus the smallest gap); -infinity when empty.
+  double deepest_overlap() const
+  {
+    double deepest = -std::numeric_limits<double>::infinity();
+    for (const ContactPoint &p : *this) deepest = std::max(deepest, -p.gap);
+    return deepest;
+  }
 };
 
 // One point of the contact of a wire segment i with a body j (or another segment j).
