@@ -24,6 +24,7 @@
 #include "nscd_boundary_fix.h"
 #include "nscd_gather.h"
 #include "nscd_new_atoms.h"
+#include "nscd_wire_elements.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -68,6 +69,11 @@ struct CreateGrains::Placed {
   double q[4];
 };
 
+struct CreateGrains::NearWire {
+  nscd::wire::WirePieces pieces;
+  double thickness = 0.0;    // the elements' radius: the wire's plus the gap
+};
+
 struct CreateGrains::Candidate {
   long index;    // 1, 2, ... in the order the sites are tried: keys the random draws
   Placed grain;
@@ -91,12 +97,14 @@ void CreateGrains::command(int narg, char **arg)
 
   std::vector<Placed> fixed = gather_grains_near_region();
   const std::vector<NSCDBoundary *> walls = walls_of_new_grains();
+  const NearWire wire = wire_elements_near_region();
   std::vector<Candidate> accepted;
   std::vector<Placed> placed;
-  bigint tried = 0, hit_wall = 0, hit_old = 0, hit_new = 0, outside = 0;
+  bigint tried = 0, hit_wall = 0, hit_wire = 0, hit_old = 0, hit_new = 0, outside = 0;
   auto try_site = [&](const Candidate &c) {
     tried++;
     if (deepest_wall_overlap(c, walls) > -r.gap) return hit_wall++, void();
+    if (touches_wire(c, wire)) return hit_wire++, void();
     if (deepest_overlap(c, fixed) > -r.gap) return hit_old++, void();
     if (deepest_overlap(c, placed) > -r.gap) return hit_new++, void();
     accepted.push_back(c);
@@ -121,8 +129,8 @@ void CreateGrains::command(int narg, char **arg)
         ? fmt::format("{} lattice sites", tried)
         : fmt::format("{} random positions in the region ({} more fell outside it; {} wanted)", tried, outside, r.count);
     utils::logmesg(lmp, "create_grains: {} grains placed in region {} from {}; rejected: {} overlapping a wall, "
-                   "{} overlapping grains already there, {} overlapping grains placed now (gap {})\n", accepted.size(),
-                   r.region->id, where, hit_wall, hit_old, hit_new, r.gap);
+                   "{} overlapping a wire, {} overlapping grains already there, {} overlapping grains placed now "
+                   "(gap {})\n", accepted.size(), r.region->id, where, hit_wall, hit_wire, hit_old, hit_new, r.gap);
   }
   if (r.layout == Request::Layout::random && (bigint) accepted.size() < r.count)
     error->warning(FLERR, "create_grains: placed {} of {} grains in {} tries (region too full); give more "
@@ -221,6 +229,49 @@ std::vector<CreateGrains::Placed> CreateGrains::gather_grains_near_region() cons
     mine.push_back(p);
   }
   return gather_records(mine, world, true);
+}
+
+/* The wire elements a new grain in the region could touch, from every rank, each as thick as
+   the wire plus the gap (fix wire's radius; 0 before fix wire is defined: the wire's axis),
+   so that an overlap of the thickened element is a surface distance below the gap. */
+CreateGrains::NearWire CreateGrains::wire_elements_near_region() const
+{
+  const Request &r = *request;
+  const WireElements all = gather_wire_elements(lmp, "create_grains");
+  NearWire nearby;
+  nearby.thickness = wire_radius_of_fix_wire(lmp, 0.0) + r.gap;
+  const double reach = avec->shapes().max_bounding_radius() + nearby.thickness;
+  auto near = [&](const nscd::Vec3 &p, const nscd::Vec3 &q) {
+    for (int d = 0; d < 3; d++)
+      if (std::max(p[d], q[d]) < r.lo[d] - reach || std::min(p[d], q[d]) > r.hi[d] + reach) return false;
+    return true;
+  };
+  for (const nscd::wire::WireElement &e : all.pieces.elements) {
+    const nscd::Vec3 &p = all.pieces.nodes[e.a], &q = all.pieces.nodes[e.b];
+    if (!near(p, q)) continue;
+    const int first = (int) nearby.pieces.nodes.size();
+    nearby.pieces.nodes.push_back(p);
+    nearby.pieces.nodes.push_back(q);
+    nearby.pieces.elements.push_back({first, first + 1, 0.0});
+  }
+  return nearby;
+}
+
+/* Whether the candidate comes within the gap of a wire element, from the wire-grain contact
+   geometry fix wire uses (lib/wire/wire_overlap.h). */
+bool CreateGrains::touches_wire(const Candidate &c, const NearWire &wire) const
+{
+  if (wire.pieces.elements.empty()) return false;
+  nscd::Pose pose;
+  pose.position = vec3(c.grain.x);
+  pose.orientation = quat_of(c.grain.q);
+  const std::vector<nscd::wire::PlacedGrain> grain{{&avec->shapes().shape(c.grain.shape), pose}};
+  try {
+    return nscd::wire::deepest_overlap_with_grains(wire.pieces, wire.thickness, grain, {}).b >= 0;
+  } catch (std::exception &e) {
+    error->one(FLERR, "create_grains: the wire overlap test of site {} failed: {}", c.index, e.what());
+  }
+  return false;
 }
 
 /* The example's layout: a simple cubic lattice of the given spacing plus its body centres,

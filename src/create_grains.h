@@ -58,6 +58,9 @@ class CreateGrains : public Command {
   double deepest_overlap(const Candidate &c, const std::vector<Placed> &grains) const;
   std::vector<NSCD_NS::NSCDBoundary *> walls_of_new_grains() const;
   double deepest_wall_overlap(const Candidate &c, const std::vector<NSCD_NS::NSCDBoundary *> &walls) const;
+  struct NearWire;    // the wire elements near the region and their thickness
+  NearWire wire_elements_near_region() const;
+  bool touches_wire(const Candidate &c, const NearWire &wire) const;
   void create(const std::vector<Candidate> &accepted);
 };
 

@@ -39,6 +39,7 @@
 #include "shape/shape_library.h"
 #include "nscd_gather.h"
 #include "nscd_new_atoms.h"
+#include "nscd_wire_elements.h"
 #include "wire/wire_overlap.h"
 #include "wire/wire_path.h"
 
@@ -103,11 +104,6 @@ struct CreateWire::Request {
   std::vector<nscd::Vec3> in_box;   // the nodes remapped into a periodic box
   std::vector<imageint> images;
   tagint first_tag = 0;
-};
-
-struct CreateWire::WireElements {
-  nscd::wire::WirePieces pieces;                 // one element per bond between wire nodes
-  std::vector<std::array<tagint, 2>> bonds;     // its nodes' atom IDs
 };
 
 void CreateWire::broadcast(std::string &text)
@@ -499,10 +495,7 @@ void CreateWire::check_types()
     error->all(FLERR, "create_wire: each node stores a bond and an angle; create "
                "the box with 'extra/bond/per/atom 1 extra/angle/per/atom 1'");
   if (r.radius < 0.0) {
-    for (Fix *fix : modify->get_fix_by_style("^wire$")) {
-      int dim = 0;
-      if (auto *radius = static_cast<double *>(fix->extract("radius", dim))) r.radius = *radius;
-    }
+    r.radius = wire_radius_of_fix_wire(lmp, -1.0);
     if (r.radius < 0.0)
       error->all(FLERR, "create_wire: give the wire radius ('radius RW') or define fix wire first");
   }
@@ -676,49 +669,11 @@ void CreateWire::check_wire_overlaps()
                self.depth, node_name(ea.a), node_name(ea.b), node_name(eb.a), node_name(eb.b), why);
   }
 
-  const WireElements existing = existing_wire_elements(end_elements);
+  const WireElements existing = gather_wire_elements(lmp, "create_wire", end_elements);
   const wire::ElementOverlap other = wire::deepest_overlap_between(mine, existing.pieces, r.radius, shifts);
   if (other.depth > allowed)
     error->all(FLERR, "create_wire {}: overlaps the wire element between atoms ID {} and {} by {:.4g}; see "
                "doc/create_wire.rst, Errors", r.shape_name, existing.bonds[other.b][0], existing.bonds[other.b][1], other.depth);
-}
-
-/* The wires already there, but for the elements in `skip`: their nodes and bonds from every
-   rank (a setup command), each element with its second node at the image nearest to its
-   first. */
-CreateWire::WireElements CreateWire::existing_wire_elements(const std::vector<std::array<tagint, 2>> &skip)
-{
-  struct Node {
-    tagint tag;
-    double x[3];
-  };
-  auto *avec = AtomVecSpheropolyhedron::find(lmp, "create_wire");
-  std::vector<Node> my_nodes;
-  std::vector<std::array<tagint, 2>> my_bonds;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (avec->shape[i] != 0) continue;
-    my_nodes.push_back({atom->tag[i], {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
-    for (int m = 0; m < atom->num_bond[i]; m++) my_bonds.push_back({atom->tag[i], atom->bond_atom[i][m]});
-  }
-  std::map<tagint, nscd::Vec3> where;
-  for (const Node &n : gather_records(my_nodes, world, true)) where[n.tag] = vec3(n.x);
-  WireElements existing;
-  for (const auto &b : gather_records(my_bonds, world, true)) {
-    const auto p = where.find(b[0]), q = where.find(b[1]);
-    if (p == where.end() || q == where.end()) continue;    // a bond to a grain: not a wire element
-    auto same = [&](const std::array<tagint, 2> &e) {
-      return (e[0] == b[0] && e[1] == b[1]) || (e[0] == b[1] && e[1] == b[0]);
-    };
-    if (std::any_of(skip.begin(), skip.end(), same)) continue;
-    double delta[3] = {q->second.x() - p->second.x(), q->second.y() - p->second.y(), q->second.z() - p->second.z()};
-    domain->minimum_image(delta);
-    const int first = (int) existing.pieces.nodes.size();
-    existing.pieces.nodes.push_back(p->second);
-    existing.pieces.nodes.push_back(p->second + vec3(delta));
-    existing.pieces.elements.push_back({first, first + 1, 0.0});
-    existing.bonds.push_back(b);
-  }
-  return existing;
 }
 
 /* 'drop yes': the wire as laid out is lowered straight down (-z) until it touches a grain, a
@@ -732,7 +687,7 @@ void CreateWire::drop_onto_what_is_below()
   Request &r = *request;
   const std::vector<nscd::wire::PlacedGrain> grains = local_grains(lmp);
   const std::vector<NSCDBoundaryFix *> boundaries = boundary_fixes(modify);
-  const WireElements existing = existing_wire_elements({});
+  const WireElements existing = gather_wire_elements(lmp, "create_wire");
   // down to the box's floor (a periodic box: one box height); the periodic images to check
   // are those the wire can reach anywhere along the way
   double lowest = r.layout.nodes[0].z();

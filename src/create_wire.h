@@ -54,8 +54,6 @@ class CreateWire : public Command {
   void drop_onto_what_is_below();    // 'drop yes'
   void check_overlaps();
   void check_wire_overlaps();
-  struct WireElements;    // the elements of the wires already there (create_wire.cpp)
-  WireElements existing_wire_elements(const std::vector<std::array<tagint, 2>> &skip);
   void create_nodes();
   void create_bonds_and_angles();
   void broadcast(std::string &text);    // from rank 0 to all

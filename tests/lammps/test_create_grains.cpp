@@ -274,6 +274,78 @@ TEST_F(CreateGrainsTest, GrainsAreNotPlacedIntoThePlate)
   }
 }
 
+// A wire already there is kept clear as grains and walls are: no grain is made within the gap
+// of an element as thick as fix wire's radius (the wire-grain contact's own distance), the
+// sites left out counted; the same fill without the wire puts grains through it.
+TEST_F(CreateGrainsTest, GrainsAreNotPlacedOntoAWire)
+{
+  const double r_w = 0.05;
+  const std::vector<std::string> wired_box = {
+      "units lj", "atom_style hybrid spheropolyhedron angle", "atom_modify map array", "boundary f f f",
+      "processors * * *", "region box block -4 4 -4 4 -1 8",
+      "create_box 2 box bond/types 1 angle/types 1 extra/bond/per/atom 1 extra/angle/per/atom 1 extra/special/per/atom 6",
+      "shapes random 24 seed 2026 vertices 10 20 size 0.8 1.0 axes 0.8 0.6 radius 0.05", "pair_style nscd",
+      "pair_coeff * * 0.5", "bond_style wire", "bond_coeff 1 100 0.2", "angle_style wire", "angle_coeff 1 0.01",
+      "region a block -3 3 -3 3 0.9 2.5 units box"};
+  // two straight wires through both planes of lattice sites (z 0.9 and 1.7) and between them
+  const std::vector<std::string> wires = {"create_wire 2 line -3.5 0.1 1.75 3.5 0.1 1.75 bond 1 angle 1 mass 0.01 radius 0.05",
+                                          "create_wire 2 line 0.7 -3.5 1.2 0.7 3.5 1.2 bond 1 angle 1 mass 0.01 radius 0.05"};
+  const std::string fill = "create_grains 1 a shape 1 24 density 1 seed 7 lattice 1.6";
+  const nscd::Segment along_x{nscd::Vec3(-3.5, 0.1, 1.75), nscd::Vec3(3.5, 0.1, 1.75), r_w};
+  const nscd::Segment along_y{nscd::Vec3(0.7, -3.5, 1.2), nscd::Vec3(0.7, 3.5, 1.2), r_w};
+  // the smallest surface distance of the grains (type 1) to either wire
+  auto closest = [&]() {
+    auto *avec = AtomVecSpheropolyhedron::find(lmp, "test");
+    const std::vector<double> all = rows(lmp, MPI_COMM_WORLD);
+    nscd::ContactWorkspace workspace;
+    double nearest = 1e30;
+    for (bigint t = 0; t < lmp->atom->natoms; t++) {
+      const double *row = &all[kFields * t];
+      if ((int) row[7] == 0) continue;    // a wire node
+      nscd::Pose pose;
+      pose.position = nscd::Vec3(row[0], row[1], row[2]);
+      pose.orientation = nscd::Quat(row[3], row[4], row[5], row[6]);
+      for (const nscd::Segment &wire : {along_x, along_y})
+        for (const auto &p : nscd::contact_segment_grain(wire, avec->shapes().shape((int) row[7]), pose, 1.0, workspace))
+          nearest = std::min(nearest, p.gap);
+    }
+    return nearest;
+  };
+  auto grains = [&]() {
+    bigint n = 0;
+    const std::vector<double> all = rows(lmp, MPI_COMM_WORLD);
+    for (bigint t = 0; t < lmp->atom->natoms; t++) n += (int) all[kFields * t + 7] != 0;
+    return n;
+  };
+
+  // without the wires: grains are made through where they will lie
+  commands(wired_box);
+  commands({fill});
+  const bigint without = grains();
+  EXPECT_LT(closest(), -r_w);    // the wire's axis inside a grain
+
+  // with them (fix wire's radius 0.05): left out, counted, none within the wire
+  restart_instance();
+  commands(wired_box);
+  commands(wires);
+  commands({"fix w all wire radius 0.05 k_n 200 gamma_n 2 k_t 150 gamma_t 1 mu_s 0.5 mu_d 0.4"});
+  std::string log = log_of(fill);
+  EXPECT_EQ(log.find(" 0 overlapping a wire"), std::string::npos) << log;
+  EXPECT_NE(log.find("overlapping a wire"), std::string::npos) << log;
+  const bigint with = grains();
+  ASSERT_GT(with, 5);
+  EXPECT_LT(with, without);
+  EXPECT_GE(closest(), 0.0);
+
+  // a gap keeps them that far from the wire's surface too
+  restart_instance();
+  commands(wired_box);
+  commands(wires);
+  commands({"fix w all wire radius 0.05 k_n 200 gamma_n 2 k_t 150 gamma_t 1 mu_s 0.5 mu_d 0.4", fill + " gap 0.2"});
+  ASSERT_GT(grains(), 3);
+  EXPECT_GE(closest(), 0.2);
+}
+
 TEST_F(CreateGrainsTest, RefusalsNameTheValue)
 {
   commands(box_lines("processors * * *"));
