@@ -42,7 +42,8 @@ WireElements gather_wire_elements(LAMMPS *lmp, const char *caller, const std::ve
   for (int i = 0; i < atom->nlocal; i++) {
     if (avec->shape[i] != 0) continue;
     my_nodes.push_back({atom->tag[i], {atom->x[i][0], atom->x[i][1], atom->x[i][2]}});
-    for (int m = 0; m < atom->num_bond[i]; m++) my_bonds.push_back({atom->tag[i], atom->bond_atom[i][m]});
+    if (atom->num_bond)    // an atom style without bonds: points, no wire
+      for (int m = 0; m < atom->num_bond[i]; m++) my_bonds.push_back({atom->tag[i], atom->bond_atom[i][m]});
   }
   std::map<tagint, nscd::Vec3> where;
   for (const Node &n : gather_records(my_nodes, lmp->world, true)) where[n.tag] = vec3(n.x);

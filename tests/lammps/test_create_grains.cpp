@@ -318,7 +318,15 @@ TEST_F(CreateGrainsTest, GrainsAreNotPlacedOntoAWire)
     return n;
   };
 
+  // points without bonds (an atom style without them) are no wire
+  commands(box_lines("processors * * *"));
+  commands({"create_atoms 1 single 0.1 0.1 1.75 units box", "region a block -3 3 -3 3 0.9 2.5 units box"});
+  ASSERT_EQ(lmp->atom->num_bond, nullptr);    // the style has no bond arrays to read
+  const std::string points = log_of(fill);
+  EXPECT_NE(points.find(" 0 overlapping a wire"), std::string::npos) << points;
+
   // without the wires: grains are made through where they will lie
+  restart_instance();
   commands(wired_box);
   commands({fill});
   const bigint without = grains();
