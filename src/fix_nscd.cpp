@@ -111,7 +111,8 @@ FixNSCD::FixNSCD(LAMMPS *lmp, int narg, char **arg) :
     pair(nullptr), avec(nullptr), pair_count(0), impulses_with_atoms(false), solved_since_filing(false),
     records_sent(0.0), values_sent(0.0), records_migrated(0.0), values_migrated(0.0), records_received(0.0),
     comm_counts(N_COMM_KINDS), exchanges_run(0), reductions_run(0), exchange_mode(Exchange::state),
-    unconverged_steps(0), last_warning_step(-1), last_speed_warning_step(-1), max_step_travel(0.0),
+    copies_planned_at(-1), plans_run(0), unconverged_steps(0), last_warning_step(-1), last_speed_warning_step(-1),
+    max_step_travel(0.0),
     kinetic_translational(0.0), kinetic_rotational(0.0), warm_start_dt(0.0)
 {
   time_integrate = 1;
@@ -416,11 +417,12 @@ void FixNSCD::setup(int vflag)
   warn_if_grains_overlap();
   records_sent = values_sent = records_migrated = values_migrated = records_received = 0.0;
   comm_counts.clear();
-  exchanges_run = reductions_run = 0;
+  exchanges_run = reductions_run = plans_run = 0;
   solver->times.clear();
   solver->run = Solver::RunStats();
   find_smallest_rounding();
   warned_depth = 0.0;
+  copies_planned_at = -1;    // atoms may have moved (balance) under the last step's time stamp
   post_force(vflag);
   measure_kinetic_energy();
 }
@@ -464,6 +466,7 @@ void FixNSCD::final_integrate()
   lap(Solver::SETUP);
   gather_contacts();
   count_shares();
+  if (direct_exchange() && neighbor->lastcall != copies_planned_at) plan_grain_copies();
   prepare_problem();
   lap(Solver::SETUP);
   solve();
@@ -889,8 +892,7 @@ void FixNSCD::stop_on_non_finite_problem()
 
 void FixNSCD::exchange_velocities()
 {
-  exchange_mode = Exchange::correction;
-  comm->reverse_comm(this, 6);
+  exchange_copies(Exchange::correction);
   // The owners now hold the sum of their copies' corrections; with mass splitting their
   // velocity changes by the mean.
   for (int b = 0; b < atom->nlocal; b++) {
@@ -900,8 +902,7 @@ void FixNSCD::exchange_velocities()
     body.velocity -= excess * solver->problem.velocity_correction(b);
     body.angular_velocity -= excess * solver->problem.angular_velocity_correction(b);
   }
-  exchange_mode = Exchange::velocity;
-  comm->forward_comm(this, 6);
+  exchange_copies(Exchange::velocity);
   // A body every rank holds takes the corrections of all ranks' contacts.
   for (int b : global_bodies) {
     nscd::SolverBody &body = solver->problem.bodies[b];
@@ -918,6 +919,69 @@ void FixNSCD::exchange_velocities()
     }
   }
   solver->problem.mark_synchronised();
+}
+
+/* The sweeps' exchange on several ranks goes straight between the ranks owning and holding
+   copies of grains, one message per pair of ranks and direction, grains only (the wire's
+   nodes are most of the ghosts on the papers' column); on one rank (periodic images only)
+   through LAMMPS' comm, which keeps one rank's trajectory to the last bit as it was.
+   `correction`: the copies' velocity changes added to their owners; `velocity`: the owners'
+   velocities to their copies. */
+void FixNSCD::exchange_copies(Exchange mode)
+{
+  exchange_mode = mode;
+  const bool reverse = mode == Exchange::correction;
+  if (!direct_exchange()) {
+    if (reverse) comm->reverse_comm(this, 6);
+    else comm->forward_comm(this, 6);
+    return;
+  }
+  nscd::ContactProblem &problem = solver->problem;
+  auto put = [](const nscd::Vec3 &a, const nscd::Vec3 &b, double *out) {
+    for (int d = 0; d < 3; d++) out[d] = a[d], out[3 + d] = b[d];
+  };
+  if (reverse) {
+    auto pack = [&](int c, double *out) {
+      put(problem.velocity_correction(copy_atoms[c]), problem.angular_velocity_correction(copy_atoms[c]), out);
+    };
+    auto add = [&](int i, const double *in) {
+      nscd::SolverBody &body = problem.bodies[i];
+      for (int d = 0; d < 3; d++) body.velocity[d] += in[d], body.angular_velocity[d] += in[3 + d];
+    };
+    grain_copies.reverse_values(6, pack, add, comm_counts, COMM_SWEEP);
+  } else {
+    auto pack = [&](int i, double *out) { put(problem.bodies[i].velocity, problem.bodies[i].angular_velocity, out); };
+    auto take = [&](int c, const double *in) {
+      nscd::SolverBody &body = problem.bodies[copy_atoms[c]];
+      for (int d = 0; d < 3; d++) body.velocity[d] = in[d], body.angular_velocity[d] = in[3 + d];
+    };
+    grain_copies.forward_values(6, pack, take, comm_counts, COMM_SWEEP);
+  }
+}
+
+bool FixNSCD::direct_exchange() const { return comm->nprocs > 1; }
+
+/* After a neighbour build on several ranks: each ghost grain learns its owner's rank and atom
+   index there (one LAMMPS forward_comm, which relays ghosts of ghosts), and the sweeps'
+   exchange is planned from them. */
+void FixNSCD::plan_grain_copies()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  origin_buffer.assign(2 * (size_t) nall, -1.0);
+  for (int i = 0; i < nlocal; i++) origin_buffer[2 * (size_t) i] = comm->me, origin_buffer[2 * (size_t) i + 1] = i;
+  exchange_mode = Exchange::origin;
+  comm->forward_comm(this, 2);
+  std::vector<NSCDCopyExchange::Origin> origins;
+  copy_atoms.clear();
+  for (int i = nlocal; i < nall; i++) {
+    if (!in_sweep_exchange(i)) continue;
+    const double *o = &origin_buffer[2 * (size_t) i];
+    copy_atoms.push_back(i);
+    origins.push_back({(int) o[0], (int) o[1], {0.0, 0.0, 0.0}});
+  }
+  grain_copies.plan(origins, world, comm_counts, COMM_STEP);
+  copies_planned_at = neighbor->lastcall;
+  plans_run++;
 }
 
 void FixNSCD::move_grains()
@@ -1062,7 +1126,9 @@ double FixNSCD::memory_usage()
   const std::size_t bytes = solver->problem.memory_bytes() + solver->warm_start.memory_bytes() +
       solver->atom_impulses.memory_bytes() +
       nscd::capacity_bytes(boundary_counts) + nscd::capacity_bytes(global_bodies) +
-      nscd::capacity_bytes(global_body_fixes) + nscd::capacity_bytes(boundaries) + nscd::capacity_bytes(boundary_fixes);
+      nscd::capacity_bytes(global_body_fixes) + nscd::capacity_bytes(boundaries) +
+      nscd::capacity_bytes(boundary_fixes) + grain_copies.memory_bytes() + nscd::capacity_bytes(copy_atoms) +
+      nscd::capacity_bytes(origin_buffer);
   return (double) bytes + (double) maxvatom * 6 * sizeof(double);
 }
 
@@ -1075,6 +1141,15 @@ int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, 
   int m = 0;
   if (exchange_mode == Exchange::share) {
     for (int k = 0; k < n; k++) buf[m++] = solver->problem.bodies[list[k]].share;
+    return m;
+  }
+  if (exchange_mode == Exchange::origin) {
+    for (int k = 0; k < n; k++) {
+      if (!in_sweep_exchange(list[k])) continue;
+      const double *o = &origin_buffer[2 * (size_t) list[k]];
+      buf[m++] = o[0];
+      buf[m++] = o[1];
+    }
     return m;
   }
   for (int k = 0; k < n; k++) {
@@ -1100,6 +1175,10 @@ void FixNSCD::unpack_forward_comm(int n, int first, double *buf)
   for (int i = first; i < first + n; i++) {
     if (exchange_mode == Exchange::share) {
       solver->problem.bodies[i].share = buf[m++];
+    } else if (exchange_mode == Exchange::origin) {
+      if (!in_sweep_exchange(i)) continue;
+      origin_buffer[2 * (size_t) i] = buf[m++];
+      origin_buffer[2 * (size_t) i + 1] = buf[m++];
     } else if (exchange_mode == Exchange::state) {
       for (double *a : {atom->v[i], avec->omega[i], atom->f[i], avec->torque[i]})
         for (int d = 0; d < 3; d++) a[d] = buf[m++];

@@ -28,6 +28,7 @@ FixStyle(nscd,FixNSCD);
 
 #include "fix.h"
 #include "nscd_comm_count.h"
+#include "nscd_copy_exchange.h"
 
 #include <memory>
 #include <string>
@@ -90,6 +91,8 @@ class FixNSCD : public Fix {
   enum CommKind { COMM_SWEEP, COMM_GHOST_STATE, COMM_STEP, COMM_RECORDS, N_COMM_KINDS };
   const NSCD_NS::NSCDCommCount &comm_count() const { return comm_counts; }
   bigint sweep_exchanges() const { return exchanges_run; }
+  // Plans of the sweep exchange made this run (several ranks: one per neighbour build).
+  bigint exchange_plans() const { return plans_run; }
   bigint solver_reductions() const { return reductions_run; }
 
   // The contacts of the last solve (grain-grain first, then boundaries), with impulses.
@@ -137,7 +140,15 @@ class FixNSCD : public Fix {
   NSCD_NS::NSCDCommCount comm_counts;
   bigint exchanges_run, reductions_run;
 
-  enum class Exchange { state, motion, share, correction, velocity, virial, records } exchange_mode;
+  enum class Exchange { state, motion, share, correction, velocity, virial, records, origin } exchange_mode;
+
+  // The sweeps' exchange on several ranks: straight between the ranks owning and holding copies
+  // of grains (nscd_copy_exchange.h), planned after each neighbour build.
+  NSCD_NS::NSCDCopyExchange grain_copies;
+  std::vector<int> copy_atoms;           // the atom index of each copy in the plan
+  std::vector<double> origin_buffer;     // per atom: its owner's rank and index there
+  bigint copies_planned_at;              // neighbor->lastcall of the plan (-1: none)
+  bigint plans_run;
 
   // diagnostics of the last step (and the solver's report)
   bigint unconverged_steps, last_warning_step, last_speed_warning_step;
@@ -175,6 +186,9 @@ class FixNSCD : public Fix {
   bool in_sweep_exchange(int i) const;
   std::string communication_report();
   void exchange_velocities();
+  bool direct_exchange() const;
+  void plan_grain_copies();
+  void exchange_copies(Exchange mode);
   void move_grains();
   void hand_back_forces();
   void tally_virial(int i, int j, const double *point, const double *force);

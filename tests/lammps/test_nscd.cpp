@@ -1296,8 +1296,10 @@ TEST_F(NSCDTest, RestingPyramidStaysPutThroughShiftAndRcbBalance)
 // message each way in the reverse communication (6 doubles per ghost) and again in the
 // forward one, 4 messages and 2 x 2 x 6 x 8 = 192 bytes; each step's start sends the ghosts'
 // state (12 doubles per ghost) in 2 messages; the rest of the step, their new motion (6) and
-// the mass-splitting shares (1 back, 1 forth), in 6 messages. On 1 rank only images: nothing
-// is counted. Then in a closed box under comm_style tiled and balance rcb, where every ghost
+// the mass-splitting shares (1 back, 1 forth), in 6 messages; after each neighbour build, the
+// plan of the sweeps' exchange on several ranks (nscd_copy_exchange.h): each ghost cube's
+// owner and index (2 doubles) and the list of wanted indices back to the owner (1 double per
+// cube: its images travel with it), 2 messages. On 1 rank only images: nothing is counted. Then in a closed box under comm_style tiled and balance rcb, where every ghost
 // comes from another rank: the same per ghost, and on 2 ranks one message per receiving rank
 // and communication. Failed with the copies within the rank counted (as fix wire's bytes per
 // substep count them): 8 ghosts' worth on 1 rank.
@@ -1318,6 +1320,7 @@ TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
     run("shapes assign all shape 1 density 1");
     if (layout == "tiled") commands({"comm_style tiled", "balance 1.0 rcb"});
     run("run " + num(steps));
+    const double plans = (double) solver()->exchange_plans();
     const std::vector<NSCD_NS::NSCDCommCount::Tally> all = solver()->comm_count().summed(MPI_COMM_WORLD);
     double mine[2] = {(double) lmp->atom->nghost, lmp->atom->nghost > 0 ? 1.0 : 0.0}, ghosts[2];
     MPI_Allreduce(mine, ghosts, 2, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
@@ -1342,11 +1345,12 @@ TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
     EXPECT_EQ(all[FixNSCD::COMM_SWEEP].bytes, 96.0 * remote * exchanges) << layout;
     EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].atoms, remote * steps) << layout;
     EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].bytes, 96.0 * remote * steps) << layout;
-    EXPECT_EQ(all[FixNSCD::COMM_STEP].bytes, 64.0 * remote * steps) << layout;
+    EXPECT_EQ(plans >= 1.0, ranks() > 1) << layout;    // after each neighbour build, on several ranks
+    EXPECT_EQ(all[FixNSCD::COMM_STEP].bytes, 64.0 * remote * steps + 24.0 * remote * plans) << layout;
     if (layout == "tiled" && ranks() > 2) continue;    // rcb's 4 sub-domains: ghosts from several ranks
     EXPECT_EQ(all[FixNSCD::COMM_SWEEP].messages, 2.0 * receiving * exchanges) << layout;
     EXPECT_EQ(all[FixNSCD::COMM_GHOST_STATE].messages, receiving * steps) << layout;
-    EXPECT_EQ(all[FixNSCD::COMM_STEP].messages, 3.0 * receiving * steps) << layout;
+    EXPECT_EQ(all[FixNSCD::COMM_STEP].messages, 3.0 * receiving * steps + 2.0 * receiving * plans) << layout;
   }
 }
 
