@@ -834,7 +834,7 @@ void FixNSCD::write_problem()
    rank iterates on the same global velocities. The convergence test is global. */
 void FixNSCD::solve()
 {
-  // lib/solver's loop, its communication done with LAMMPS' comm (ghost velocities) and
+  // lib/solver's loop, its communication done by exchange_velocities() (ghost velocities) and
   // MPI_Allreduce, so every decision (stop, restart, coarse correction) is global.
   // The communication's time (waiting for the other ranks included) is counted apart from
   // the sweeps' (final_integrate counts the whole solve as sweeps).
@@ -1134,7 +1134,8 @@ double FixNSCD::memory_usage()
 
 /* Communication: `state` sends v, omega, f, torque to ghosts before the solve; during it,
    `correction` sums ghost velocity changes into owners and `velocity` copies owners'
-   solver velocities to their ghosts. */
+   solver velocities to their ghosts (through LAMMPS' comm on one rank only: on several,
+   exchange_copies() sends them itself, and `origin` plans that). */
 int FixNSCD::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
   comm_counts.packed(buf);

@@ -118,13 +118,13 @@ double NSCDCopyExchange::forward_values(int width, Pack pack, Take take, NSCDCom
   scratch.resize(width);
   for (const std::array<int, 2> &s : self) {
     pack(s[0], scratch.data());
-    take(s[1], (const double *) scratch.data());
+    take(s[1], scratch.data());
   }
   packed += (double) width * self.size();
   for (const Peer &o : owners)
     for (size_t k = 0; k + 1 < o.first.size(); k++)
       for (int c = o.first[k]; c < o.first[k + 1]; c++)
-        take(o.items[c], (const double *) &o.buffer[(size_t) width * k]);
+        take(o.items[c], &o.buffer[(size_t) width * k]);
   return packed;
 }
 
@@ -148,11 +148,11 @@ double NSCDCopyExchange::reverse_values(int width, Pack pack, Add add, NSCDCommC
   swap_buffers(holders, owners, width, REVERSE_TAG, counts, kind);
   for (const std::array<int, 2> &s : self) {
     pack(s[1], scratch.data());
-    add(s[0], (const double *) scratch.data());
+    add(s[0], scratch.data());
   }
   packed += (double) width * self.size();
   for (const Peer &h : holders)
-    for (size_t k = 0; k < h.items.size(); k++) add(h.items[k], (const double *) &h.buffer[(size_t) width * k]);
+    for (size_t k = 0; k < h.items.size(); k++) add(h.items[k], &h.buffer[(size_t) width * k]);
   return packed;
 }
 

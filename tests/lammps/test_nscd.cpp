@@ -1299,8 +1299,9 @@ TEST_F(NSCDTest, RestingPyramidStaysPutThroughShiftAndRcbBalance)
 // the mass-splitting shares (1 back, 1 forth), in 6 messages; after each neighbour build, the
 // plan of the sweeps' exchange on several ranks (nscd_copy_exchange.h): each ghost cube's
 // owner and index (2 doubles) and the list of wanted indices back to the owner (1 double per
-// cube: its images travel with it), 2 messages. On 1 rank only images: nothing is counted. Then in a closed box under comm_style tiled and balance rcb, where every ghost
-// comes from another rank: the same per ghost, and on 2 ranks one message per receiving rank
+// cube: its images travel with it), 2 messages. On 1 rank only images: nothing is counted.
+// Then in a closed box under comm_style tiled and balance rcb, where every ghost comes from
+// another rank: the same per ghost, and on 2 ranks one message per receiving rank
 // and communication. Failed with the copies within the rank counted (as fix wire's bytes per
 // substep count them): 8 ghosts' worth on 1 rank.
 TEST_F(NSCDTest, CommunicationBetweenRanksIsCountedAsByHand)
