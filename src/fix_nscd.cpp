@@ -799,6 +799,9 @@ void FixNSCD::count_shares()
     MPI_Allreduce(&mine, &solver->problem.bodies[b].share, 1, MPI_DOUBLE, MPI_SUM, world);
   }
   for (nscd::SolverBody &body : solver->problem.bodies) body.share = std::max(1.0, body.share);
+  split_owned.clear();
+  for (int b = 0; b < atom->nlocal; b++)
+    if (solver->problem.bodies[b].share != 1.0) split_owned.push_back(b);
 }
 
 /* The Delassus blocks and free velocities of the step's contacts. */
@@ -895,9 +898,8 @@ void FixNSCD::exchange_velocities()
   exchange_copies(Exchange::correction);
   // The owners now hold the sum of their copies' corrections; with mass splitting their
   // velocity changes by the mean.
-  for (int b = 0; b < atom->nlocal; b++) {
+  for (int b : split_owned) {
     nscd::SolverBody &body = solver->problem.bodies[b];
-    if (body.share == 1.0) continue;
     const double excess = 1.0 - 1.0 / body.share;
     body.velocity -= excess * solver->problem.velocity_correction(b);
     body.angular_velocity -= excess * solver->problem.angular_velocity_correction(b);
@@ -1125,7 +1127,7 @@ double FixNSCD::memory_usage()
 {
   const std::size_t bytes = solver->problem.memory_bytes() + solver->warm_start.memory_bytes() +
       solver->atom_impulses.memory_bytes() +
-      nscd::capacity_bytes(boundary_counts) + nscd::capacity_bytes(global_bodies) +
+      nscd::capacity_bytes(boundary_counts) + nscd::capacity_bytes(global_bodies) + nscd::capacity_bytes(split_owned) +
       nscd::capacity_bytes(global_body_fixes) + nscd::capacity_bytes(boundaries) +
       nscd::capacity_bytes(boundary_fixes) + grain_copies.memory_bytes() + nscd::capacity_bytes(copy_atoms) +
       nscd::capacity_bytes(origin_buffer);

@@ -126,6 +126,7 @@ class FixNSCD : public Fix {
   size_t pair_count;                 // problem.contacts: pair_count grain pairs, then each
   std::vector<int> boundary_counts;  // boundary's in turn (as of the last solve)
   std::vector<int> global_bodies;    // bodies that every rank holds (boundaries' own)
+  std::vector<int> split_owned;      // owned bodies whose contacts lie on several copies (share > 1)
   std::vector<Fix *> global_body_fixes;  // their fixes
 
   // Where the warm-start impulses are: with the atoms (after a restart, or filed before atoms

@@ -243,7 +243,12 @@ void ContactProblem::prepare(const SolverOptions &options)
   build_groups();
   synced_velocity_.resize(bodies.size());
   synced_angular_velocity_.resize(bodies.size());
-  mark_synchronised();
+  movable_.clear();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    synced_velocity_[b] = bodies[b].velocity;
+    synced_angular_velocity_[b] = bodies[b].angular_velocity;
+    if (bodies[b].inv_mass != 0.0 || !bodies[b].inv_inertia.isZero(0.0)) movable_.push_back((int) b);
+  }
   for (std::size_t c = 0; c < contacts.size(); ++c) {
     Row &row = rows_[c];
     if (row.inert) continue;
@@ -341,7 +346,9 @@ double ContactProblem::lowest_normal_velocity(const Contact &contact, double u_n
 
 void ContactProblem::mark_synchronised()
 {
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
+  // Immovable bodies (wire nodes, grains outside the solved group: most of a rank's atoms in
+  // the wired column) keep the velocities prepare() marked.
+  for (int b : movable_) {
     synced_velocity_[b] = bodies[b].velocity;
     synced_angular_velocity_[b] = bodies[b].angular_velocity;
   }
@@ -797,8 +804,9 @@ std::size_t ContactProblem::memory_bytes() const
 {
   return capacity_bytes(bodies) + capacity_bytes(contacts) + capacity_bytes(rows_) + capacity_bytes(group_) +
       capacity_bytes(remembered_) + capacity_bytes(order_) + capacity_bytes(swept_) + capacity_bytes(synced_velocity_) +
-      capacity_bytes(synced_angular_velocity_) + capacity_bytes(acceleration_terms_) + capacity_bytes(anderson_dg_) +
-      capacity_bytes(anderson_df_) + capacity_bytes(anderson_g_) + capacity_bytes(anderson_f_) +
+      capacity_bytes(synced_angular_velocity_) + capacity_bytes(movable_) + capacity_bytes(acceleration_terms_) +
+      capacity_bytes(anderson_dg_) + capacity_bytes(anderson_df_) + capacity_bytes(anderson_g_) +
+      capacity_bytes(anderson_f_) +
       sizeof(double) * static_cast<std::size_t>(anderson_gram_.size() + anderson_mix_.size());
 }
 

@@ -323,7 +323,10 @@ class ContactProblem {
   {
     return bodies[b].angular_velocity - synced_angular_velocity_[b];
   }
-  // Call once the velocities of all bodies (owned and ghost) agree across ranks.
+  // Call once the velocities of all bodies (owned and ghost) agree across ranks. After
+  // prepare() it re-marks only the bodies with a finite mass or inertia: the others' velocities
+  // change by no impulse, so an exchange must leave them as they are (copies of such a body
+  // agree already).
   void mark_synchronised();
 
   // Bytes this problem holds on the heap (bodies, contacts, the rows and the sweep's
@@ -355,6 +358,7 @@ class ContactProblem {
   std::vector<int> order_;
   std::vector<int> swept_;    // order_ less the contacts skipped until the next check
   std::vector<Vec3> synced_velocity_, synced_angular_velocity_;
+  std::vector<int> movable_;    // bodies with a finite mass or inertia (mark_synchronised())
   SolverOptions options_;
   std::mt19937_64 random_;
   int sweeps_done_ = 0;

@@ -304,3 +304,40 @@ TEST(EmulatedRanks, ColumnUnderAHeavyPlateCutIntoFourBands)
     }
   }
 }
+
+// A body of infinite mass and inertia (a wire node or a grain outside fix nscd's group, held
+// by its own integrator) keeps its velocity: mark_synchronised() skips it after prepare(), so
+// the answer on several ranks, where its copies straddle the cut, must still be one rank's,
+// and its copies must not move (a stale mark of its velocity would move the copies of a moving
+// body). The middle brick of the pyramid's bottom row is held, sliding along y without
+// friction under the two bricks it carries.
+TEST(EmulatedRanks, PyramidOnAHeldSlidingBrickMatchesOneRank)
+{
+  const double tolerance = 1e-9;
+  ContactProblem whole = brick_pyramid(7, 0.5, 1e-3);
+  SolverBody &held = whole.bodies[3];
+  held.inv_mass = 0.0;
+  held.inv_inertia = Mat3::Zero();
+  held.velocity = Vec3(0.0, 0.05, 0.0);
+  for (Contact &c : whole.contacts)
+    if (c.body_i == 3 || c.body_j == 3) c.friction = 0.0;
+  const SolverOptions options = options_for({"gs", Acceleration::none, 0.0}, tolerance);
+  ContactProblem single = whole;
+  ASSERT_TRUE(solve(single, options).converged);
+  for (const int count : {2, 4}) {
+    const Emulated run = solve_on_ranks(whole, slabs_along_x(whole, count), count, options);
+    ASSERT_TRUE(run.report.converged) << count << " ranks";
+    const double velocity_error = 2.0 * 7 * tolerance * std::sqrt(run.report.terms.scale_squared);
+    for (const ContactProblem &rank : run.ranks)
+      EXPECT_EQ(rank.bodies[3].velocity, held.velocity) << count << " ranks: the held brick was moved";
+    const ContactProblem result = gathered(whole, run);
+    for (std::size_t b = 0; b < whole.bodies.size(); ++b)
+      EXPECT_LT((result.bodies[b].velocity - single.bodies[b].velocity).norm(), velocity_error)
+          << count << " ranks, brick " << b;
+    // the held brick carries the bricks on it
+    double carried = 0.0;
+    for (const Contact &c : result.contacts)
+      if (c.body_j == 3) carried += c.impulse.z();
+    EXPECT_GT(carried, 1e-3) << count << " ranks";
+  }
+}
