@@ -53,6 +53,15 @@ double turned_by(const Quat &from, const Quat &to)
   return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
 }
 
+// Axis times angle (in [0, pi]) of a unit quaternion.
+Vec3 rotation_vector(const Quat &q)
+{
+  const double sign = q.w() < 0.0 ? -1.0 : 1.0;
+  const Vec3 axis = sign * q.vec();
+  const double s = axis.norm();
+  return s == 0.0 ? Vec3::Zero() : Vec3((2.0 * std::atan2(s, sign * q.w()) / s) * axis);
+}
+
 // Squared distance the farther of two nodes moved from where it was seen.
 double farther_squared(const Vec3 &x1, const Vec3 &seen1, const Vec3 &x2, const Vec3 &seen2)
 {
@@ -153,7 +162,7 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
   if (lists_valid_ && scene.grains.size() == grains_last_step_.size()) {
     std::vector<double> moved(scene.grains.size());
     for (size_t g = 0; g < moved.size(); ++g) {
-      const Pose &now = scene.grains[g].pose, &then = grains_last_step_[g];
+      const Pose &now = scene.grains[g].pose, &then = grains_last_step_[g].pose;
       moved[g] = (now.position - then.position).norm() +
                  turned_by(then.orientation, now.orientation) * scene.grains[g].shape->bounding_radius;
     }
@@ -166,11 +175,12 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
   records_.clear();
   record_of_.clear();
   recorded_substeps_ = 0;
+  measure_unseen_motion(scene);
+  unseen_pending_ = true;
   boundary_travel_ += fastest_boundary_ * step_;    // the boundaries moved over the last step
   step_ = dt_step;
   scene_ = std::move(scene);
-  grains_last_step_.clear();
-  for (const GrainCopy &g : scene_.grains) grains_last_step_.push_back(g.pose);
+  grains_last_step_ = scene_.grains;
   fastest_boundary_ = 0.0;
   for (const BoundaryLink &b : scene_.boundaries) fastest_boundary_ = std::max(fastest_boundary_, b.speed);
   frames_.clear();
@@ -189,6 +199,38 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
     }
   else
     lists_valid_ = false;
+}
+
+// Each copy of the new scene against the last scene's copy of its grain: the same index if
+// it holds the same grain (no re-indexing), else the copy of that id nearest to it (periodic
+// images lie a box apart). A grain new here (a new ghost, the first step of a run after a
+// restart) has nothing to take.
+void ContactModel::measure_unseen_motion(const ContactScene &next)
+{
+  const std::vector<GrainCopy> &last = grains_last_step_;
+  unseen_.assign(next.grains.size(), UnseenMotion{});
+  if (last.empty() || !(step_ > 0.0)) return;
+  std::vector<std::pair<std::int64_t, int>> by_id;    // built at the first copy that needs it
+  for (size_t g = 0; g < next.grains.size(); ++g) {
+    const GrainCopy &now = next.grains[g];
+    const GrainCopy *then = g < last.size() && last[g].id == now.id ? &last[g] : nullptr;
+    if (!then) {
+      if (by_id.empty()) {
+        for (size_t k = 0; k < last.size(); ++k) by_id.emplace_back(last[k].id, (int) k);
+        std::sort(by_id.begin(), by_id.end());
+      }
+      double nearest = std::numeric_limits<double>::infinity();
+      for (auto it = std::lower_bound(by_id.begin(), by_id.end(), std::make_pair(now.id, -1));
+           it != by_id.end() && it->first == now.id; ++it) {
+        const double d = (last[it->second].pose.position - now.pose.position).squaredNorm();
+        if (d < nearest) nearest = d, then = &last[it->second];
+      }
+      if (!then) continue;
+    }
+    unseen_[g].shift = now.pose.position - then->pose.position - step_ * then->velocity;
+    unseen_[g].turn = rotation_vector(now.pose.orientation * then->pose.orientation.conjugate()) -
+                      step_ * then->angular_velocity;
+  }
 }
 
 // The lists miss no pair that can touch while every pair closed by less than the skin
@@ -419,6 +461,7 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
     g.threshold = smallest;
   }
   for (BoundaryPair &p : boundary_pairs_) out.wire_boundary += boundary_contact(p, x, v, tau, dt, f, reactions, out);
+  unseen_pending_ = false;
   return out;
 }
 
@@ -456,6 +499,10 @@ bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vec
     closed = true;
     const LeverWeights lever = lever_weights(point.s_i);
     const Vec3 arm = point.point - g.pose.position;
+    if (unseen_pending_) {
+      const UnseenMotion &u = unseen_[p.grain];
+      follow_other_body(spring[k], u.shift + u.turn.cross(arm), point.normal);
+    }
     const Vec3 v_rel = lever.on_a * v[p.a] + lever.on_b * v[p.b] - (g.velocity + g.angular_velocity.cross(arm));
     const SoftContactForce r = soft_contact_force(grain_laws_[g.law], point.normal, -point.gap, v_rel, dt, spring[k]);
     const Vec3 force = weight * r.force;
@@ -603,7 +650,7 @@ std::size_t ContactModel::memory_bytes() const
       capacity_bytes(grain_groups_) + capacity_bytes(wire_pairs_) + capacity_bytes(wire_watch_) +
       capacity_bytes(wire_groups_) + capacity_bytes(boundary_pairs_) + capacity_bytes(carried_) +
       capacity_bytes(built_at_) + capacity_bytes(moved_) + capacity_bytes(grains_built_at_) +
-      capacity_bytes(grains_last_step_) + capacity_bytes(centres_);
+      capacity_bytes(grains_last_step_) + capacity_bytes(unseen_) + capacity_bytes(centres_);
 }
 
 }    // namespace nscd::wire

@@ -31,6 +31,13 @@
 //    times per move of the grains); the grain's velocity still enters the contact's
 //    relative velocity (dashpot and friction), so a wire carried along by a moving grain
 //    does not slide on it;
+//  * a tangential spring thus follows its grain as if the grain kept, over the step, the
+//    velocity it had at the step's start; how far the grain moved beyond that (its velocity
+//    changed in the grain step) the spring takes at the first substep of the next step, so
+//    that it holds the true relative displacement. Without this the spring lags its grain
+//    by a step, and a sticking contact gains energy whenever k_t dt > 2 gamma_t (the
+//    column's law at its step: 7.5 > 2): grains on the wire ring at the friction limit
+//    (doc/Howto_nscd_wire_model.rst, section 3b);
 //  * friction memory is kept per contact and per end of its stretch ("low" = the end
 //    nearer the element's first node): it survives the stretch gaining or losing an end,
 //    and when one point opens into a stretch both new ends start from its spring (see
@@ -307,7 +314,16 @@ class ContactModel {
   std::vector<double> moved_;               // per node, distance from there (this substep)
   double largest_moved_ = 0.0;              // the largest of them
   std::vector<Pose> grains_built_at_;
-  std::vector<Pose> grains_last_step_;
+  std::vector<GrainCopy> grains_last_step_;    // the last scene's (the caller takes the scene back)
+  // Per grain copy of this step's scene: how far it moved over the last step beyond its
+  // held pose carried on by the velocities the last subcycle used (turn: a rotation
+  // vector); its contacts' springs take it at this step's first substep.
+  struct UnseenMotion {
+    Vec3 shift = Vec3::Zero(), turn = Vec3::Zero();
+  };
+  std::vector<UnseenMotion> unseen_;
+  bool unseen_pending_ = false;             // the first substep of the step is still to come
+  void measure_unseen_motion(const ContactScene &next);
   double boundary_travel_ = 0.0;            // of the fastest boundary, before this step
   double fastest_boundary_ = 0.0;           // speed, this step
   double other_moved_ = 0.0;                // largest grain or boundary displacement at step start

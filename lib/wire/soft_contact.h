@@ -86,6 +86,13 @@ inline SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3
                                            double overlap, const Vec3 &relative_velocity, double dt,
                                            TangentialHistory &history);
 
+// The other body moved by `displacement` beyond what the relative velocities handed to
+// soft_contact_force carried into the spring (the wire's subcycle holds grains still and
+// moves them on between grain steps): the spring takes the part in the plane normal to
+// `normal`, as that relative tangential motion would have given it, and so holds the
+// true relative displacement. A contact without memory is left as it is.
+inline void follow_other_body(TangentialHistory &history, const Vec3 &displacement, const Vec3 &normal);
+
 // Lever rule: a force at the point a + s (b - a) of element (a,b) goes (1-s) to a and s to b.
 // This is the paper's "weights inversely proportional to the distance" for a point on the
 // segment, and it keeps both the total force and the torque about any point.
@@ -175,6 +182,14 @@ __attribute__((always_inline)) inline SoftContactForce soft_contact_force(const 
   out.force += out.tangential_force;
   out.elastic_energy += 0.5 * law.k_t * xi.squaredNorm();
   return out;
+}
+
+inline void follow_other_body(TangentialHistory &history, const Vec3 &displacement, const Vec3 &normal)
+{
+  using namespace soft_contact_detail;
+  const Vec3 xi = load(history);
+  if (xi.squaredNorm() == 0.0) return;
+  store(xi - (displacement - displacement.dot(normal) * normal), history);    // v_t = v_wire - v_other
 }
 
 inline LeverWeights lever_weights(double s)

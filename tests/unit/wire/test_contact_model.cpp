@@ -233,6 +233,92 @@ TEST(WireGrainContact, GrainOfItsOwnFrictionSlidesAtItsCoefficient)
   EXPECT_THROW(model.begin_step(scene, 1e-3, false), std::invalid_argument);
 }
 
+// The wire's subcycle holds a grain still and lets its springs follow the grain's velocity
+// at the step's start. A spring must end up holding the true relative displacement however
+// the grain moved: a grain whose velocity carried it by d over a step and one found moved
+// by d without a velocity give their element the same friction force at the next step,
+// k_t times the element's drag minus d (the drag made first, on a grain at rest).
+TEST(WireGrainContact, SpringHoldsTheGrainsTrueDisplacementWhateverItsHeldVelocity)
+{
+  const double h = 1e-3, d = 2e-5, drag = 50 * 0.1 * 1e-5;
+  const int substeps = 100;
+  auto force_after = [&](double held_speed) {
+    ElementOnBox e(Vec3(-0.3, 0, 0), Vec3(0.3, 0, 0));
+    e.x = {Vec3(-0.3, 0, e.z), Vec3(0.3, 0, e.z)};
+    e.model.begin_step(test::chain_scene(e.x, {{7, &e.box, place(e.box, Vec3::Zero())}}), h, true);
+    e.v = {Vec3(0.1, 0, 0), Vec3(0.1, 0, 0)};
+    for (int k = 0; k < 50; ++k) e.substep();    // sticking (it slips at a drag of mu k_n depth / k_t = 5e-4)
+    e.v = {Vec3::Zero(), Vec3::Zero()};
+    test::TestGrain grain{7, &e.box, place(e.box, Vec3::Zero()), Vec3(held_speed, 0, 0)};
+    e.model.begin_step(test::chain_scene(e.x, {grain}), h, false);
+    for (int k = 0; k < substeps; ++k) e.substep();    // (e.dt: the subcycle spans h)
+    grain.pose = place(e.box, Vec3(d, 0, 0));
+    grain.velocity = Vec3::Zero();
+    e.model.begin_step(test::chain_scene(e.x, {grain}), h, false);
+    return e.substep();
+  };
+  const Vec3 carried = force_after(d / (substeps * 1e-5)), unseen = force_after(0.0);
+  const Vec3 before = [] {
+    ElementOnBox e(Vec3(-0.3, 0, 0), Vec3(0.3, 0, 0));
+    e.x = {Vec3(-0.3, 0, e.z), Vec3(0.3, 0, e.z)};
+    e.model.begin_step(test::chain_scene(e.x, {{7, &e.box, place(e.box, Vec3::Zero())}}), 1e-3, true);
+    e.v = {Vec3(0.1, 0, 0), Vec3(0.1, 0, 0)};
+    Vec3 f = Vec3::Zero();
+    for (int k = 0; k < 50; ++k) f = e.substep();
+    return f;
+  }();
+  std::printf("friction force after the drag %.6g, grain carried by its velocity %.6g, moved unseen %.6g\n",
+              before.x(), carried.x(), unseen.x());
+  EXPECT_NEAR(carried.x() / before.x(), (drag - d) / drag, 1e-9);
+  EXPECT_NEAR(unseen.x() / before.x(), (drag - d) / drag, 1e-9);
+}
+
+// A grain on a held element, moved by the test's own grain step as fix nscd moves it
+// (V += h F / m with F the wire's force averaged over the subcycle, then X += h V), at the
+// column's law and step: k_t h = 7.5 > 2 gamma_t = 2. Kicked along the element, its
+// sticking contact rings at about sqrt(K / m) and must die away at least as fast as its
+// dashpot alone would damp it (energy factor exp(-gamma_t w t / m) with w the contact's
+// summed weight). Springs that followed only the held velocity made each step's energy
+// grow by ~(1 + h^2 K / 2 m) - 2 gamma_t h w / m: the grain rang at the friction limit.
+TEST(WireGrainContact, GrainRingingOnAHeldElementDiesAwayAtTheColumnsStep)
+{
+  SoftContactLaw law;
+  law.k_n = 2000.0, law.gamma_n = 2.0, law.k_t = 1500.0, law.gamma_t = 1.0, law.mu_s = law.mu_d = 1.0;
+  const double r = 0.05, r_w = 0.05, depth = 2e-3, h = 0.005, m = 0.43;
+  const int substeps = 80;
+  const Spheropolyhedron box = make_box(0.5, 0.5, 0.5, r);
+  ContactModel model(law, r_w, 0.05);
+  model.set_elements(test::chain_elements(2));
+  const double z = 0.5 + r + r_w - depth;
+  const std::vector<Vec3> x{Vec3(-0.3, 0, z), Vec3(0.3, 0, z)}, v(2, Vec3::Zero());
+  Vec3 X = Vec3::Zero(), V(2e-3, 0, 0);
+  double energy0 = 0.0, energy = 0.0, weight = 0.0;
+  const int steps = 200;
+  for (int step = 0; step <= steps; ++step) {
+    model.begin_step(test::chain_scene(x, {{7, &box, place(box, X), V}}), h, false);
+    GrainForceAccumulator reactions;
+    reactions.reset(1);
+    double contact_energy = 0.0;
+    for (int k = 0; k < substeps; ++k) {
+      std::vector<Vec3> f(2, Vec3::Zero());
+      const ContactTotals t = model.add_forces(x, v, k * h / substeps, h / substeps, f, reactions);
+      reactions.count_substep();
+      contact_energy = t.energy;
+      if (step == 0 && k == 0) weight = t.normal_force / (law.k_n * depth);
+    }
+    const double tangential = contact_energy - weight * 0.5 * law.k_n * depth * depth;    // spring energy k_t xi^2 / 2
+    if (step == 0) energy0 = 0.5 * m * V.squaredNorm();
+    energy = 0.5 * m * V.squaredNorm() + tangential;
+    V.x() += h * reactions.mean_force(0).x() / m;    // the grain slides along x only
+    X.x() += h * V.x();
+  }
+  const double T = steps * h, dashpot_only = std::exp(-law.gamma_t * weight * T / m);
+  std::printf("contact weight %.4g; grain energy %.4g after %g against %.4g at the kick (dashpot alone: %.4g)\n",
+              weight, energy, T, energy0, energy0 * dashpot_only);
+  EXPECT_GT(weight, 0.5);
+  EXPECT_LT(energy, energy0 * dashpot_only);
+}
+
 // Recorded contact points (for compute wire/contacts): the crossing of two elements is one
 // point, at the crossing, normal from the upper element to the lower one (the computing
 // one), its normal force averaged over the step's substeps: closed in the first of two

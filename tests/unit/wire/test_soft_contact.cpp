@@ -171,6 +171,22 @@ TEST(SoftContact, HistoryRotatesWithTheContactFrame)
   EXPECT_NEAR(Vec3(h.xi[0], h.xi[1], h.xi[2]).dot(turned), 0.0, 1e-18);
 }
 
+// The other body moved by d beyond what the relative velocity carried: the spring takes
+// -d's part in the tangent plane (it measures wire minus other body); a contact without
+// memory has nothing to shift.
+TEST(SoftContact, SpringFollowsTheOtherBodysUnseenMotionInTheTangentPlane)
+{
+  TangentialHistory h;
+  soft_contact_force(frictional_law(), Vec3::UnitZ(), 0.01, Vec3(1, 0, 0), 1e-3, h);    // xi = (1e-3, 0, 0)
+  follow_other_body(h, Vec3(2e-4, -1e-4, 5e-4), Vec3::UnitZ());
+  EXPECT_NEAR(h.xi[0], 8e-4, 1e-18);
+  EXPECT_NEAR(h.xi[1], 1e-4, 1e-18);
+  EXPECT_EQ(h.xi[2], 0.0);
+  TangentialHistory none;
+  follow_other_body(none, Vec3(2e-4, -1e-4, 5e-4), Vec3::UnitZ());
+  EXPECT_EQ(Vec3(none.xi[0], none.xi[1], none.xi[2]), Vec3::Zero());
+}
+
 TEST(SoftContact, TangentialDampingAndFrictionlessFastPath)
 {
   SoftContactLaw law = frictional_law();
