@@ -204,7 +204,8 @@ void ContactModel::begin_step(ContactScene scene, double dt_step, bool reindexed
 // Each copy of the new scene against the last scene's copy of its grain: the same index if
 // it holds the same grain (no re-indexing), else the copy of that id nearest to it (periodic
 // images lie a box apart). A grain new here (a new ghost, the first step of a run after a
-// restart) has nothing to take.
+// restart) has nothing to take, nor one that moved beyond its size unseen (the copy found is
+// another image, or the grain was placed by hand between runs).
 void ContactModel::measure_unseen_motion(const ContactScene &next)
 {
   const std::vector<GrainCopy> &last = grains_last_step_;
@@ -227,7 +228,9 @@ void ContactModel::measure_unseen_motion(const ContactScene &next)
       }
       if (!then) continue;
     }
-    unseen_[g].shift = now.pose.position - then->pose.position - step_ * then->velocity;
+    const Vec3 shift = now.pose.position - then->pose.position - step_ * then->velocity;
+    if (shift.norm() > now.shape->bounding_radius) continue;    // another image, or a grain placed by hand
+    unseen_[g].shift = shift;
     unseen_[g].turn = rotation_vector(now.pose.orientation * then->pose.orientation.conjugate()) -
                       step_ * then->angular_velocity;
   }

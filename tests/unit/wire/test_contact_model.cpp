@@ -273,6 +273,39 @@ TEST(WireGrainContact, SpringHoldsTheGrainsTrueDisplacementWhateverItsHeldVeloci
   EXPECT_NEAR(unseen.x() / before.x(), (drag - d) / drag, 1e-9);
 }
 
+// A grain found farther from where its velocity would have taken it than its own size is
+// another image of it, or was placed by hand between runs: its contacts' springs are left
+// as they were (a 4 x 4 face, bounding radius 2.9, found moved by 3 under a sticking
+// element: the friction force stays; taking the move would have slipped the contact).
+TEST(WireGrainContact, SpringIgnoresAGrainFoundMovedBeyondItsSize)
+{
+  const double r = 0.02, r_w = 0.02, depth = 1e-3, dt = 1e-5;
+  const Spheropolyhedron slab = make_box(2.0, 2.0, 0.5, r);
+  ContactModel model(sticky_law(), r_w, 0.05);
+  model.set_elements(test::chain_elements(2));
+  const double z = 0.5 + r + r_w - depth;
+  std::vector<Vec3> x{Vec3(1.2, 0, z), Vec3(1.8, 0, z)};
+  const std::vector<Vec3> v(2, Vec3(0.1, 0, 0)), still(2, Vec3::Zero());
+  auto substep = [&](const std::vector<Vec3> &u) {
+    for (int k = 0; k < 2; ++k) x[k] += u[k] * dt;
+    std::vector<Vec3> f(2, Vec3::Zero());
+    GrainForceAccumulator reactions;
+    reactions.reset(1);
+    model.add_forces(x, u, 0.0, dt, f, reactions);
+    return f[0] + f[1];
+  };
+  model.begin_step(test::chain_scene(x, {{7, &slab, place(slab, Vec3::Zero())}}), 1e-3, false);
+  Vec3 before = Vec3::Zero();
+  for (int k = 0; k < 50; ++k) before = substep(v);    // dragged by 5e-5, sticking
+  ASSERT_GT(slab.bounding_radius, 2.0);
+  ASSERT_LT(slab.bounding_radius, 3.0);
+  model.begin_step(test::chain_scene(x, {{7, &slab, place(slab, Vec3(3.0, 0, 0))}}), 1e-3, true);
+  x = {Vec3(4.2, 0, z), Vec3(4.8, 0, z)};    // the element where it lay on the face
+  const Vec3 after = substep(still);
+  EXPECT_NEAR(after.x(), before.x(), 1e-9 * std::abs(before.x()));
+  EXPECT_NEAR(after.z(), before.z(), 1e-9 * std::abs(before.z()));
+}
+
 // A grain on a held element, moved by the test's own grain step as fix nscd moves it
 // (V += h F / m with F the wire's force averaged over the subcycle, then X += h V), at the
 // column's law and step: k_t h = 7.5 > 2 gamma_t = 2. Kicked along the element, its
