@@ -37,7 +37,7 @@
 //    that it holds the true relative displacement. Without this the spring lags its grain
 //    by a step, and a sticking contact gains energy whenever k_t dt > 2 gamma_t (the
 //    column's law at its step: 7.5 > 2): grains on the wire ring at the friction limit
-//    (doc/Howto_nscd_wire_model.rst, section 3b);
+//    (doc/Howto_nscd_wire_model.rst, section 5);
 //  * friction memory is kept per contact and per end of its stretch ("low" = the end
 //    nearer the element's first node): it survives the stretch gaining or losing an end,
 //    and when one point opens into a stretch both new ends start from its spring (see
