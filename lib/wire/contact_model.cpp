@@ -53,6 +53,15 @@ double turned_by(const Quat &from, const Quat &to)
   return 2.0 * std::atan2(d.vec().norm(), std::abs(d.w()));
 }
 
+// Axis times angle (in [0, pi]) of a unit quaternion.
+Vec3 rotation_vector(const Quat &q)
+{
+  const double sign = q.w() < 0.0 ? -1.0 : 1.0;
+  const Vec3 axis = sign * q.vec();
+  const double s = axis.norm();
+  return s == 0.0 ? Vec3::Zero() : Vec3((2.0 * std::atan2(s, sign * q.w()) / s) * axis);
+}
+
 // Squared distance the farther of two nodes moved from where it was seen.
 double farther_squared(const Vec3 &x1, const Vec3 &seen1, const Vec3 &x2, const Vec3 &seen2)
 {
@@ -221,9 +230,9 @@ void ContactModel::measure_unseen_motion(const ContactScene &next)
     }
     const Vec3 shift = now.pose.position - then->pose.position - step_ * then->velocity;
     if (shift.norm() > now.shape->bounding_radius) continue;    // another image, or a grain placed by hand
-    const Eigen::AngleAxisd turn(now.pose.orientation * then->pose.orientation.conjugate());    // angle in [0, pi]
     unseen_[g].shift = shift;
-    unseen_[g].turn = turn.angle() * turn.axis() - step_ * then->angular_velocity;
+    unseen_[g].turn = rotation_vector(now.pose.orientation * then->pose.orientation.conjugate()) -
+                      step_ * then->angular_velocity;
   }
 }
 
