@@ -172,6 +172,13 @@ void FixNSCDPlate::setup(int /*vflag*/)
   if (any_above)
     error->all(FLERR, "fix nscd/plate {}: atom ID {} is above the plate (z = {}); put the plate "
                "above all grains and wire nodes of its group", id, any_above, z);
+  // A grain whose centre is below the plate can still reach into it (a grain leaning on a
+  // column's side, higher than the column's top): the first step would find the plate that
+  // deep and stop as a plate sinking under its load does; say what is wrong instead.
+  const GrainInBoundary grain = deepest_grain_in(lmp, *plate, *plate->avec, groupbit);
+  if (grain.share > 0.2)
+    error->all(FLERR, "fix nscd/plate {}: grain ID {} reaches {:.4g} into the plate at z = {}; put it above the grains' tops",
+               id, grain.id, grain.depth, z);
 }
 
 void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)

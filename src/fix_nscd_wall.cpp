@@ -192,31 +192,15 @@ void FixNSCDWall::setup(int /*vflag*/)
    depth and, for a cylinder, its radius, as fix nscd warns about grains inside grains. */
 void FixNSCDWall::warn_about_grains_in_the_wall()
 {
-  struct {
-    double share;    // depth / bounding radius
-    int rank;
-  } mine{0.0, comm->me}, worst;
-  double found[3] = {0.0, 0.0, 0.0};    // depth, atom ID, bounding radius
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit) || wall->avec->shape[i] == 0) continue;
-    const nscd::Spheropolyhedron &shape = wall->avec->shape_of(i);
-    const double depth = wall->deepest_overlap(shape, wall->avec->pose(i), 0.0);
-    if (depth / shape.bounding_radius > mine.share) {
-      mine.share = depth / shape.bounding_radius;
-      found[0] = depth, found[1] = (double) atom->tag[i], found[2] = shape.bounding_radius;
-    }
-  }
-  MPI_Allreduce(&mine, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, world);
-  if (!(worst.share > 0.2)) return;
-  MPI_Bcast(found, 3, MPI_DOUBLE, worst.rank, world);
-  if (comm->me != 0) return;
+  const GrainInBoundary grain = deepest_grain_in(lmp, *wall, *wall->avec, groupbit);
+  if (!(grain.share > 0.2) || comm->me != 0) return;
   if (wall->kind == Wall::Kind::cylinder)
     error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} into the cylinder wall of radius {:.6g} at the "
-                   "start{}", id, (tagint) found[1], found[0], wall->cylinder.radius,
-                   wall->cylinder.radius < found[2] ? " (narrower than the grain)" : "; place it inside");
+                   "start{}", id, grain.id, grain.depth, wall->cylinder.radius,
+                   wall->cylinder.radius < grain.bounding_radius ? " (narrower than the grain)" : "; place it inside");
   else
     error->warning(FLERR, "fix nscd/wall {}: grain ID {} reaches {:.4g} behind the plane wall "
-                   "at the start; place it in front", id, (tagint) found[1], found[0]);
+                   "at the start; place it in front", id, grain.id, grain.depth);
 }
 
 double FixNSCDWall::Wall::deepest_overlap(const nscd::Spheropolyhedron &shape, const nscd::Pose &pose, double within)

@@ -27,6 +27,9 @@
 #include <vector>
 
 namespace LAMMPS_NS {
+class AtomVecSpheropolyhedron;
+class LAMMPS;
+
 namespace NSCD_NS {
 
 class NSCDBoundary {
@@ -86,6 +89,18 @@ class NSCDBoundary {
   nscd::Vec3 wire_force;
   bigint wire_force_step;
 };
+
+// The grain of the group (groupbit) reaching deepest into `boundary` as it stands, over all
+// ranks: its depth relative to its bounding radius (share), depth, bounding radius and atom
+// ID; all zero when no grain overlaps it. For the boundaries' start-of-run checks, which warn
+// or stop past a fifth of the bounding radius (the depth at which fix nscd warns about
+// grains inside grains). Collective: every rank must call it.
+struct GrainInBoundary {
+  double share, depth, bounding_radius;
+  tagint id;
+};
+GrainInBoundary deepest_grain_in(LAMMPS *lmp, NSCDBoundary &boundary, const AtomVecSpheropolyhedron &avec,
+                                 int groupbit);
 
 }    // namespace NSCD_NS
 }    // namespace LAMMPS_NS

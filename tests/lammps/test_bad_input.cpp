@@ -220,6 +220,22 @@ TEST_F(BadInputTest, PlateSinkingUnderAHugeLoadRateStopsTheRun)
   EXPECT_EQ(error_of("run 20"), "");
 }
 
+// A plate put into a grain whose centre is below it (a grain leaning on a column's side,
+// higher than the column's top): refused at the start, naming the grain that reaches deepest
+// and the way out (before: the first step stopped with "the plate is 0.363 of a grain's
+// bounding radius deep; lower the load 0 or rate 0", examples/string with a round-off change).
+TEST_F(BadInputTest, PlatePutIntoAGrainIsRefusedNamingIt)
+{
+  resting_cubes();
+  commands({"group second id 2", "displace_atoms second move 0 0 0.1"});    // tops at 1.0 and 1.1
+  commands({"fix plate all nscd/plate 0.8 mass 1"});    // 0.2 and 0.3 into the cubes
+  const std::string message = error_of("run 0");
+  EXPECT_TRUE(has(message, "fix nscd/plate plate: grain ID 2 reaches 0.3 into the plate at z = 0.8; put it above")) << message;
+  // 0.05 into the higher cube (0.058 of its bounding radius): a contact to resolve, not an error
+  commands({"unfix plate", "fix plate all nscd/plate 1.05 mass 1"});
+  EXPECT_EQ(error_of("run 0"), "");
+}
+
 // Numbers of the package's keywords: nan, inf, a fraction for a count, a word, a number
 // beyond doubles: each refused naming the command, the keyword and the value (before:
 // LAMMPS' parser named only the value, "Expected floating point parameter instead of 'nan'").
