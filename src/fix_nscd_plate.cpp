@@ -177,8 +177,8 @@ void FixNSCDPlate::setup(int /*vflag*/)
   // deep and stop as a plate sinking under its load does; say what is wrong instead.
   const GrainInBoundary grain = deepest_grain_in(lmp, *plate, *plate->avec, groupbit);
   if (grain.share > 0.2)
-    error->all(FLERR, "fix nscd/plate {}: grain ID {} reaches {:.4g} into the plate at z = {}; put it above the grains' tops",
-               id, grain.id, grain.depth, z);
+    error->all(FLERR, "fix nscd/plate {}: grain ID {} reaches {:.4g} into the plate at z = {}; "
+               "put it above the grains' tops", id, grain.id, grain.depth, z);
 }
 
 void FixNSCDPlate::Plate::append_contacts(std::vector<nscd::Contact> &contacts, double base, double dt)
