@@ -774,7 +774,7 @@ TEST_F(WireTest, SubstepAboveTheStabilityLimitIsANamedError)
 // Before the springs took the grain's motion that its velocity at the step's start did not
 // carry (lib/wire/contact_model.h), the grain rang on at the friction limit. The cube is
 // heavier than the column's grains (2 against 0.3-0.5) so that its sliding-rocking mode
-// stays within the explicit coupling's reach, h^2 K / m_eff below about 4 (doc/Howto_nscd_wire_model.rst).
+// stays within the explicit coupling's reach, h^2 K / m_eff below about 2 (doc/Howto_nscd_wire_model.rst).
 TEST_F(WireTest, GrainKickedOnAHeldWireComesToRestAtTheColumnsStep)
 {
   // two legs of four elements at y = -0.2 and 0.2 joined at x = 0.8, the cube's face (0.8
