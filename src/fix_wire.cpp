@@ -77,12 +77,12 @@ enum Diagnostic {
 /* fix ID group wire [k_n K] [gamma_n G] [k_t K] [gamma_t G] [mu_s M] [mu_d M] [mu_ww_s M] [mu_ww_d M]
                      [grain_friction TYPES MU_S MU_D] [radius R]
                      [damp C] [substeps N|auto|stable] [dt_sp DT] [safety S] [contacts_per_node N]
-                     [skin S] [inertia S] */
+                     [skin S] [inertia S] [grain_springs carried|held] */
 FixWire::FixWire(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), lib(new Lib(this)), gear(nullptr), state_dt(0.0), mu_s_given(false),
     mu_d_given(false), k_n_given(false), mu_ww_s(-1.0), mu_ww_d(-1.0), contacts_recorded(false),
     wire_radius(0.0), node_damping(0.0), contact_skin(-1.0), requested_substeps(0), fastest_stable(false),
-    requested_dt_sp(0.0), safety(0.9), contacts_per_node(2.0), inertia_scale(1.0), bond(nullptr),
+    springs_held(false), requested_dt_sp(0.0), safety(0.9), contacts_per_node(2.0), inertia_scale(1.0), bond(nullptr),
     angle(nullptr), avec(nullptr), stable_dt_sp(0.0), owned_nodes(0), grains_anywhere(false), indexed_at(-1),
     memories_with_atoms(false), longest_element(0.0), comm_mode(Comm::node_state), counting_comm(false),
     comm_counts(N_COMM_KINDS), migrated(), diagnostics(), largest_tension(0.0), largest_tension_in_run(0.0),
@@ -166,12 +166,12 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
       {"contacts_per_node", &contacts_per_node}, {"dt_sp", &requested_dt_sp}, {"safety", &safety},
       {"skin", &contact_skin}, {"mu_ww_s", &mu_ww_s}, {"mu_ww_d", &mu_ww_d}, {"inertia", &inertia_scale},
       {"strength", &strength}, {"strength_spread", &strength_spread}, {"seed", &strength_seed}};
-  const bool known = plain.count(key) || key == "substeps" || key == "breaks";
+  const bool known = plain.count(key) || key == "substeps" || key == "breaks" || key == "grain_springs";
   if (!known)
     error->all(FLERR, "fix wire: unknown keyword '{}'; the keywords are listed in doc/fix_wire.rst, Syntax", key);
   if (iarg + 1 >= narg) error->all(FLERR, "fix wire: keyword '{}' needs a value (doc/fix_wire.rst, Syntax)", key);
   if (plain.count(value) || strcmp(value, "substeps") == 0 || strcmp(value, "breaks") == 0 ||
-      strcmp(value, "grain_friction") == 0)
+      strcmp(value, "grain_friction") == 0 || strcmp(value, "grain_springs") == 0)
     error->all(FLERR, "fix wire: keyword '{}' needs a value, but the next word is the keyword '{}' "
                "(doc/fix_wire.rst, Syntax)", key, value);
   if (key == "breaks") {
@@ -182,6 +182,13 @@ void FixWire::parse_option(int narg, char **arg, int &iarg)
         error->one(FLERR, "fix wire: cannot open the breaks file '{}' for writing: {}", value, utils::getsyserror());
       fprintf(breaks_file, "# step node_id_1 node_id_2 tension x y z   (fix wire %s: broken elements)\n", id);
     }
+    return;
+  }
+  if (key == "grain_springs") {
+    springs_held = strcmp(value, "held") == 0;
+    if (!springs_held && strcmp(value, "carried") != 0)
+      error->all(FLERR, "fix wire: grain_springs {} is neither carried (the default) nor held "
+                 "(doc/fix_wire.rst, Syntax)", value);
     return;
   }
   if (key == "substeps") {
@@ -441,6 +448,7 @@ void FixWire::make_contact_model()
     const int law = lib->contacts->add_grain_friction(g.mu_s, g.mu_d);
     for (int t = g.lo; t <= g.hi; t++) grain_law_of_type[t] = law;
   }
+  lib->contacts->set_grain_springs(springs_held ? wire::GrainSprings::held : wire::GrainSprings::carried);
   lib->contacts->add_memories(memories);
   lib->contacts->record_contacts(contacts_recorded);
   lib->step.contacts = lib->contacts.get();

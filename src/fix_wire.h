@@ -139,6 +139,7 @@ class FixWire : public Fix {
   double wire_radius, node_damping, contact_skin;
   int requested_substeps;        // 0: from dt_sp or chosen (auto or stable)
   bool fastest_stable;            // substeps stable: the stable step, not the accurate one
+  bool springs_held;              // grain_springs held: wire-grain friction springs by the held poses
   double requested_dt_sp, safety, contacts_per_node;
   double inertia_scale;          // the nodes' inertia over their mass (option inertia)
 

@@ -439,7 +439,7 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
       if (!(element_moved < w.threshold)) {    // else it cannot touch yet
         GrainPair &p = grain_pairs_[k];
         if (!(p.seen_gap > 0.0 && farther_squared(x[p.a], p.seen[0], x[p.b], p.seen[1]) < p.seen_gap * p.seen_gap))
-          out.wire_grain += grain_contact(p, w, x, v, dt, f, reactions, out);
+          out.wire_grain += grain_contact(p, w, x, v, tau, dt, f, reactions, out);
       }
       if (!(w.threshold >= smallest)) smallest = w.threshold;    // (NaN stays)
     }
@@ -472,7 +472,7 @@ ContactTotals ContactModel::add_forces(const std::vector<Vec3> &x, const std::ve
 // stretch (or at its one point), each with its own overlap and spring, weighed by
 // stretch_end_weight; the query reaches r_w beyond touching, the length of that ramp.
 bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vector<Vec3> &x,
-                                 const std::vector<Vec3> &v, double dt, std::vector<Vec3> &f,
+                                 const std::vector<Vec3> &v, double tau, double dt, std::vector<Vec3> &f,
                                  GrainForceAccumulator &reactions, ContactTotals &totals)
 {
   const Vec3 &xa = x[p.a], &xb = x[p.b];
@@ -506,8 +506,21 @@ bool ContactModel::grain_contact(GrainPair &p, GrainWatch &watch, const std::vec
       const UnseenMotion &u = unseen_[p.grain];
       follow_other_body(spring[k], u.shift + u.turn.cross(arm), point.normal);
     }
-    const Vec3 v_rel = lever.on_a * v[p.a] + lever.on_b * v[p.b] - (g.velocity + g.angular_velocity.cross(arm));
-    const SoftContactForce r = soft_contact_force(grain_laws_[g.law], point.normal, -point.gap, v_rel, dt, spring[k]);
+    const Vec3 surface = g.velocity + g.angular_velocity.cross(arm);
+    const Vec3 v_rel = lever.on_a * v[p.a] + lever.on_b * v[p.b] - surface;
+    // Held springs: the grain's velocity carries the history ahead of its held pose by tau v
+    // without stretching the spring (see soft_contact_force); a contact new at this substep
+    // starts from that history at the substep's start, its spring unstretched.
+    Vec3 ahead = Vec3::Zero();
+    if (grain_springs_ == GrainSprings::held) {
+      ahead = -tau * surface;
+      if (spring_is_zero(spring[k])) {
+        const Vec3 before = ahead + dt * surface;
+        soft_contact_detail::store(before - before.dot(point.normal) * point.normal, spring[k]);
+      }
+    }
+    const SoftContactForce r =
+        soft_contact_force(grain_laws_[g.law], point.normal, -point.gap, v_rel, dt, spring[k], ahead);
     const Vec3 force = weight * r.force;
     if (recording_) record(p.key, ContactRecord::wire_grain, k, point, weight, r);
     f[p.a] += lever.on_a * force;

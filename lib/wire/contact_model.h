@@ -165,6 +165,19 @@ struct ContactRecord {
   bool sliding = false;
 };
 
+// How the friction springs of wire-grain contacts treat a grain's motion within the grain
+// step (the subcycle holds grains still at their step-start pose):
+//   carried  the spring follows the grain as if it kept its step-start velocity: a wire
+//            riding on a moving grain sticks to it at any speed. The spring's force over
+//            the step is that of the grain half a step on, which halves the explicit
+//            coupling's limit (a grain rings once h^2 K / m passes about 2). Default.
+//   held     the spring pulls by the held poses, as the normal overlap does, and takes the
+//            grain's whole motion at the next step: the limit is about 4, but a wire riding
+//            on a grain at speed v sees a saw-tooth of k_t v h each step and slips once that
+//            passes about 2 mu f_n.
+// In both the dashpots see the grain's velocity. doc/Howto_nscd_wire_model.rst.
+enum class GrainSprings : std::uint8_t { carried, held };
+
 struct ContactTotals {
   double energy = 0.0;          // elastic energy stored in the contacts
   double normal_force = 0.0;    // sum of the (weighted) normal forces
@@ -183,6 +196,7 @@ class ContactModel {
   // law shared: returns the index a GrainCopy gives as its `law` (0: the law given to the
   // constructor). Throws std::invalid_argument naming a bad value.
   int add_grain_friction(double mu_s, double mu_d);
+  void set_grain_springs(GrainSprings how) { grain_springs_ = how; }
 
   // Every element of the wire as (lower id, higher id), for the rule that elements joined
   // by a node or by one element do not touch.
@@ -285,6 +299,7 @@ class ContactModel {
   SoftContactLaw law_;
   SoftContactLaw wire_wire_law_;    // law_ with the wire-wire friction
   std::vector<SoftContactLaw> grain_laws_;    // [0] = law_, then add_grain_friction's
+  GrainSprings grain_springs_ = GrainSprings::carried;
   bool recording_ = false;
   int recorded_substeps_ = 0;
   std::vector<ContactRecord> records_;
@@ -342,8 +357,8 @@ class ContactModel {
   void find_boundary_pairs(const std::vector<Vec3> &x, double tau);
   template <class Pair> void recall(Pair &pair);
 
-  bool grain_contact(GrainPair &p, GrainWatch &watch, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
-                     std::vector<Vec3> &f, GrainForceAccumulator &reactions, ContactTotals &totals);
+  bool grain_contact(GrainPair &p, GrainWatch &watch, const std::vector<Vec3> &x, const std::vector<Vec3> &v,
+                     double tau, double dt, std::vector<Vec3> &f, GrainForceAccumulator &reactions, ContactTotals &totals);
   bool wire_contact(WirePair &p, WireWatch &watch, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double dt,
                     std::vector<Vec3> &f, ContactTotals &totals);
   bool boundary_contact(BoundaryPair &p, const std::vector<Vec3> &x, const std::vector<Vec3> &v, double tau,

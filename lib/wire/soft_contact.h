@@ -80,11 +80,19 @@ struct SoftContactForce {
 // One time step of the contact: rotates history into the plane normal to `normal`,
 // increments it by v_t * dt, evaluates the law and updates history in place.
 // A contact with overlap <= 0 is open: zero force and the history is cleared.
+// `ahead`: the part of the relative displacement that body B's velocity has carried its
+// surface beyond where B is held (the wire's subcycle holds grains still while their
+// velocity enters v): the history keeps it, so that it holds the relative displacement
+// the velocities give, but it does not stretch the spring, which pulls by the relative
+// displacement of the held poses, as the normal overlap does. follow_other_body hands the
+// spring B's true motion at the next step. (A spring carried ahead by B's velocity acts
+// as if B were half a step further on: a grain ringing on sticking wire contacts then
+// grows from h^2 K / m of about 2, held from about 4; doc/Howto_nscd_wire_model.rst.)
 // (Inline, below: the wire's substeps call it for every closed contact, and inlined the
 // parts of the result a caller does not use cost nothing.)
 inline SoftContactForce soft_contact_force(const SoftContactLaw &law, const Vec3 &normal,
                                            double overlap, const Vec3 &relative_velocity, double dt,
-                                           TangentialHistory &history);
+                                           TangentialHistory &history, const Vec3 &ahead = Vec3::Zero());
 
 // The other body moved by `displacement` beyond what the relative velocities handed to
 // soft_contact_force carried into the spring (the wire's subcycle holds grains still and
@@ -137,7 +145,7 @@ inline Vec3 rotate_into_tangent_plane(const Vec3 &xi, const Vec3 &normal)
 __attribute__((always_inline)) inline SoftContactForce soft_contact_force(const SoftContactLaw &law,
                                                                           const Vec3 &normal, double overlap,
                                                                           const Vec3 &relative_velocity, double dt,
-                                                                          TangentialHistory &history)
+                                                                          TangentialHistory &history, const Vec3 &ahead)
 {
   using namespace soft_contact_detail;
   SoftContactForce out;
@@ -155,7 +163,8 @@ __attribute__((always_inline)) inline SoftContactForce soft_contact_force(const 
   }
 
   const Vec3 tangential_velocity = relative_velocity - normal_speed * normal;
-  Vec3 xi = rotate_into_tangent_plane(load(history), normal) + tangential_velocity * dt;
+  const Vec3 ahead_t = ahead - ahead.dot(normal) * normal;
+  Vec3 xi = rotate_into_tangent_plane(load(history), normal) + tangential_velocity * dt - ahead_t;    // the stretch
   const Vec3 trial = -(law.k_t * xi + law.gamma_t * tangential_velocity);
   const bool was_sliding = history.sliding != 0.0;
   const double mu = was_sliding && law.slip_reset == SlipReset::ToDynamicLength ? law.mu_d : law.mu_s;
@@ -178,7 +187,7 @@ __attribute__((always_inline)) inline SoftContactForce soft_contact_force(const 
     out.tangential_force = trial;
     history.sliding = 0.0;
   }
-  store(xi, history);
+  store(xi + ahead_t, history);
   out.force += out.tangential_force;
   out.elastic_energy += 0.5 * law.k_t * xi.squaredNorm();
   return out;

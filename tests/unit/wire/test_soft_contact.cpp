@@ -187,6 +187,32 @@ TEST(SoftContact, SpringFollowsTheOtherBodysUnseenMotionInTheTangentPlane)
   EXPECT_EQ(Vec3(none.xi[0], none.xi[1], none.xi[2]), Vec3::Zero());
 }
 
+// The part of the history that body B's velocity carried ahead of its held pose (held
+// springs) is kept in the history but does not stretch the spring: the force is k_t times
+// the history less that part's tangential component, the energy that of the stretch; a
+// slipping contact keeps it on top of the dynamic length. (f_n 10, mu_s f_n 6, mu_d f_n 4.)
+TEST(SoftContact, HistoryCarriedAheadIsKeptButDoesNotStretchTheSpring)
+{
+  const SoftContactLaw law = frictional_law();
+  const Vec3 n = Vec3::UnitZ(), ahead(-2e-3, 1e-3, 7.0);    // (its normal part is dropped)
+  TangentialHistory h;
+  // the history moves by v dt = (1e-3, 0, 0); the stretch is that less the carried part
+  const SoftContactForce f = soft_contact_force(law, n, 0.01, Vec3(1, 0, 0), 1e-3, h, ahead);
+  const Vec3 stretch(3e-3, -1e-3, 0.0);
+  EXPECT_NEAR((f.tangential_force + law.k_t * stretch).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(f.elastic_energy, 0.5 * law.k_n * 1e-4 + 0.5 * law.k_t * stretch.squaredNorm(), 1e-15);
+  EXPECT_NEAR((Vec3(h.xi[0], h.xi[1], h.xi[2]) - Vec3(1e-3, 0, 0)).norm(), 0.0, 1e-18);
+  EXPECT_FALSE(f.slipped);
+  // carried far enough to slip: the spring goes to the dynamic length along the stretch,
+  // and the history keeps the carried part on top of it
+  TangentialHistory s;
+  const Vec3 far(-0.02, 0.0, 0.0);    // a stretch of 0.02 + 1e-3: k_t times it 8.4 > 6
+  const SoftContactForce slip = soft_contact_force(law, n, 0.01, Vec3(1, 0, 0), 1e-3, s, far);
+  EXPECT_TRUE(slip.slipped);
+  EXPECT_NEAR((slip.tangential_force - Vec3(-4.0, 0, 0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((Vec3(s.xi[0], s.xi[1], s.xi[2]) - (Vec3(0.01, 0, 0) + far)).norm(), 0.0, 1e-15);
+}
+
 TEST(SoftContact, TangentialDampingAndFrictionlessFastPath)
 {
   SoftContactLaw law = frictional_law();
