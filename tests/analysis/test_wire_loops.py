@@ -156,6 +156,35 @@ class Command(unittest.TestCase):
         self.assertAlmostEqual(float(rows[0]["offset"]), float(np.hypot(*centre)), places=5)
         self.assertGreater(float(rows[0]["offset"]), 0.1)
 
+    def test_contacts_say_how_the_grains_press_each_loop(self):
+        # two loops (nodes 10-100 and 200-290); contact rows of compute wire/contacts: id1 id2
+        # other kind px py pz nx ny nz fn ftx fty ftz overlap status
+        first, first_elements = helix(10, 2.5, 1.8, 0.12, 91)
+        second, second_elements = helix(200, 2.0, 1.8, 0.12, 91, z0=1.0)
+        points = [[10, 11, 5, 1, 2.0, 0.0, 0.1, 0.0, 0.0, -1.0, 3.0, 0, 0, 0, 1e-3, 0],    # pressed down by 3
+                  [11, 12, 6, 1, 0.0, 2.0, 0.2, 0.0, 0.6, 0.8, 5.0, 0, 0, 0, 1e-3, 0],    # up 4, out 3
+                  [200, 201, 7, 1, -2.0, 0.0, 1.0, 1.0, 0.0, 0.0, 2.0, 0, 0, 0, 1e-3, 0],  # in 2 (axis at -x)
+                  [11, 12, 200, 2, 1.0, 1.0, 0.5, 0.0, 0.0, 1.0, 1.5, 0, 0, 0, 1e-3, 0],  # wire-wire: both loops
+                  [12, 0, -1, 3, 2.5, 0.0, 0.0, 0.0, 0.0, 1.0, 9.0, 0, 0, 0, 1e-3, 0]]    # a wall: not counted
+        with tempfile.TemporaryDirectory() as d:
+            nodes = synthetic.write_dump(os.path.join(d, "nodes.dump"), [(100, ["id", "xu", "yu", "zu"], first + second)])
+            elements = synthetic.write_dump(os.path.join(d, "wire.dump"),
+                                            [(100, synthetic.indexed("el", 5), first_elements + second_elements)],
+                                            "ENTRIES")
+            contacts = synthetic.write_dump(os.path.join(d, "wc.dump"), [(100, synthetic.indexed("wc", 16), points)],
+                                            "ENTRIES")
+            out = os.path.join(d, "loops")
+            with contextlib.redirect_stdout(io.StringIO()):
+                self.assertEqual(cli.main(["wire-loops", "--elements", elements, "--nodes", nodes, "--contacts",
+                                           contacts, "-o", out]), 0)
+            with open(out + ".csv") as f:
+                rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+        pressed = {r["first_id"]: {k: float(r[k]) for k in wire_loops.PRESS_FIELDS} for r in rows}
+        self.assertEqual(pressed["10"], {"grain_points": 2, "press_down": 3.0, "press_up": 4.0, "press_out": 3.0,
+                                         "press_in": 0.0, "wire_wire_fn": 1.5})
+        self.assertEqual(pressed["200"], {"grain_points": 1, "press_down": 0.0, "press_up": 0.0, "press_out": 0.0,
+                                          "press_in": 2.0, "wire_wire_fn": 1.5})
+
 
 if __name__ == "__main__":
     unittest.main()

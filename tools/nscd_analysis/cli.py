@@ -639,6 +639,8 @@ LOOP_FIELDS = ("nodes", "x_offset", "y_offset", "offset", "z_mean", "z_span", "r
 
 def cmd_wire_loops(args):
     rows, series = [], []
+    contacts = {s.timestep: s for s in read_dumps(args.contacts)} if args.contacts else {}
+    fields = LOOP_FIELDS + (wire_loops.PRESS_FIELDS if args.contacts else ())
     for elements, nodes in _wire_steps(args):
         found = wire_loops.chains(elements.column("id1", WIRE_ELEMENTS), elements.column("id2", WIRE_ELEMENTS))
         if not found:
@@ -646,7 +648,16 @@ def cmd_wire_loops(args):
             continue
         measures = [wire_loops.loop_measures(nodes.positions_of(path, "wire node"), closed, args.axis)
                     for path, closed in found]
-        rows += [[elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in LOOP_FIELDS]
+        if args.contacts:
+            if elements.timestep in contacts:
+                pressed = wire_loops.pressing([path for path, _ in found], contacts[elements.timestep], args.axis)
+            else:
+                print(f"nscd-analysis: step {elements.timestep}: no wire contacts in {' '.join(args.contacts)}; "
+                      "its pressing columns are nan", file=sys.stderr)
+                pressed = [dict.fromkeys(wire_loops.PRESS_FIELDS, float("nan")) for _ in found]
+            for m, extra in zip(measures, pressed):
+                m.update(extra)
+        rows += [[elements.timestep, path[0], "closed" if closed else "open"] + [m[f] for f in fields]
                  for (path, closed), m in zip(found, measures)]
         series.append((elements.timestep, sorted(measures, key=lambda m: m["z_mean"])))    # drawn upwards
         slack = np.array([m["slack"] for m in measures])
@@ -660,10 +671,13 @@ def cmd_wire_loops(args):
               f"{np.median([m['offset'] for m in measures]):.3f} (max {max(m['offset'] for m in measures):.3f})")
     if not rows:
         raise SystemExit("nscd-analysis: no step with both element rows and node positions")
-    print(_write_csv(args.out, ["step", "first_id", "kind"] + list(LOOP_FIELDS), rows,
-                     [f"wire chains about the vertical axis through {tuple(args.axis)}; slack = length / "
-                      "(r_median x angle spanned) - 1; offset = distance of the chain's mean node "
-                      "position from the axis; own_r_median, own_slack: the same about the chain's own centre"]))
+    notes = [f"wire chains about the vertical axis through {tuple(args.axis)}; slack = length / "
+             "(r_median x angle spanned) - 1; offset = distance of the chain's mean node "
+             "position from the axis; own_r_median, own_slack: the same about the chain's own centre"]
+    if args.contacts:
+        notes.append("press_down/up/out/in: the chain's wire-grain normal forces times the part of the normal "
+                     "(grain to wire) pointing down/up/radially out/in; wire_wire_fn: its wire-wire normal forces")
+    print(_write_csv(args.out, ["step", "first_id", "kind"] + list(fields), rows, notes))
     fig = plots.wire_loops([(step, [m["slack"] for m in measures], [m["r_median"] for m in measures],
                              [m["offset"] for m in measures], [m["z_mean"] for m in measures])
                             for step, measures in series])
@@ -849,6 +863,8 @@ def parser():
     p.add_argument("--nodes", nargs="+", required=True, help="dump custom files with id x y z of the wire nodes")
     p.add_argument("--axis", type=float, nargs=2, default=(0.0, 0.0), metavar=("X", "Y"),
                    help="vertical column axis through (X, Y) (default 0 0)")
+    p.add_argument("--contacts", nargs="+", help="dump local files of compute wire/contacts: adds how the grains "
+                                                  "press each loop (down, up, out, in) to the CSV")
     p.add_argument("--out", "-o", required=True, help="output prefix: PREFIX.png and PREFIX.csv")
     p.add_argument("--steps", type=int, nargs="+")
     p.add_argument("--last", action="store_true")

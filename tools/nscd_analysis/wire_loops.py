@@ -21,6 +21,12 @@ whether it is still taut where those about the axis no longer can."""
 
 import numpy as np
 
+from .layouts import WIRE_CONTACTS, WIRE_GRAIN, WIRE_WIRE
+
+# How the grains press each chain (wire-loops --contacts): the loop's friction, which keeps
+# its ends from sliding apart, can only be as large as what clamps it.
+PRESS_FIELDS = ("grain_points", "press_down", "press_up", "press_out", "press_in", "wire_wire_fn")
+
 
 def chains(id1, id2):
     """The node IDs of each connected chain of elements (id1[k], id2[k]), in path order from
@@ -92,3 +98,40 @@ def _measures_about(points, closed, axis):
             "z_mean": float(z[:nodes].mean()), "z_span": float(np.ptp(z[:nodes])), "r_median": r_median,
             "turns": spanned / (2.0 * np.pi), "length": length, "horizontal_length": horizontal,
             "circle": circle, "slack": length / circle - 1.0 if circle > 0.0 else float("nan")}
+
+
+def pressing(chain_paths, contacts, axis=(0.0, 0.0)):
+    """How the grains press each chain (a list of node-ID paths), from one snapshot of
+    compute wire/contacts (layouts.WIRE_CONTACTS): per chain a dict of PRESS_FIELDS.
+    grain_points: its wire-grain contact points; press_down, press_up: the sums of their
+    normal forces f_n times the part of the normal (from grain to wire) pointing down or up
+    (grains above pressing the wire down, grains below pressing it up: down + up is the clamp
+    between layers); press_out, press_in: the same along the outward radial direction about
+    the vertical axis through axis = (X, Y) at the contact point (grains pushing the loop
+    outward, as a column held in by it does, or inward); wire_wire_fn: the normal forces of
+    the wire-wire points where the chain touches itself or another chain. A point belongs to
+    the chain of its element's first node (for wire-wire, also to the other element's)."""
+    chain_of = {node: k for k, path in enumerate(chain_paths) for node in path}
+    out = [dict.fromkeys(PRESS_FIELDS, 0.0) for _ in chain_paths]
+    kind = contacts.column("kind", WIRE_CONTACTS)
+    id1 = contacts.column("id1", WIRE_CONTACTS).astype(np.int64)
+    other = contacts.column("other", WIRE_CONTACTS).astype(np.int64)
+    fn = contacts.column("fn", WIRE_CONTACTS)
+    n = contacts.vectors(("nx", "ny", "nz"), WIRE_CONTACTS)
+    p = contacts.vectors(("px", "py", "pz"), WIRE_CONTACTS)
+    radial = p[:, :2] - np.asarray(axis, dtype=float)
+    r = np.hypot(radial[:, 0], radial[:, 1])
+    n_r = np.where(r > 0.0, (n[:, 0] * radial[:, 0] + n[:, 1] * radial[:, 1]) / np.where(r > 0.0, r, 1.0), 0.0)
+    for k in range(len(kind)):
+        mine = chain_of.get(int(id1[k]))
+        if kind[k] == WIRE_GRAIN and mine is not None:
+            m = out[mine]
+            m["grain_points"] += 1
+            m["press_down"] += fn[k] * max(0.0, -n[k, 2])
+            m["press_up"] += fn[k] * max(0.0, n[k, 2])
+            m["press_out"] += fn[k] * max(0.0, n_r[k])
+            m["press_in"] += fn[k] * max(0.0, -n_r[k])
+        elif kind[k] == WIRE_WIRE:
+            for chain in {mine, chain_of.get(int(other[k]))} - {None}:
+                out[chain]["wire_wire_fn"] += fn[k]
+    return out
