@@ -21,6 +21,7 @@ whether it is still taut where those about the axis no longer can."""
 
 import numpy as np
 
+from .cylinder import Cylindrical
 from .layouts import WIRE_CONTACTS, WIRE_GRAIN, WIRE_WIRE
 
 # How the grains press each chain (wire-loops --contacts): the loop's friction, which keeps
@@ -118,10 +119,7 @@ def pressing(chain_paths, contacts, axis=(0.0, 0.0)):
     other = contacts.column("other", WIRE_CONTACTS).astype(np.int64)
     fn = contacts.column("fn", WIRE_CONTACTS)
     n = contacts.vectors(("nx", "ny", "nz"), WIRE_CONTACTS)
-    p = contacts.vectors(("px", "py", "pz"), WIRE_CONTACTS)
-    radial = p[:, :2] - np.asarray(axis, dtype=float)
-    r = np.hypot(radial[:, 0], radial[:, 1])
-    n_r = np.where(r > 0.0, (n[:, 0] * radial[:, 0] + n[:, 1] * radial[:, 1]) / np.where(r > 0.0, r, 1.0), 0.0)
+    n_r = np.einsum("ij,ij->i", n, Cylindrical(contacts.vectors(("px", "py", "pz"), WIRE_CONTACTS), axis).e_r)
     for k in range(len(kind)):
         mine = chain_of.get(int(id1[k]))
         if kind[k] == WIRE_GRAIN and mine is not None:
