@@ -833,7 +833,7 @@ TEST_F(KickedGrainTest, GrainKickedOnAHeldWireComesToRestAtTheColumnsStep)
 
 // A cube of the column's grains' mass (0.3) makes the mode too stiff for carried springs:
 // its energy grew to three times the kick's and was 0.76 of it after 400 steps (measured).
-// Held springs, whose limit is twice as high, bring it to rest (1e-7 of the kick; at 0.2
+// Held springs, whose limit is twice as high, bring it to rest (5e-8 of the kick on 1 rank; at 0.2
 // both grew first, at 0.12 both rang on: the normal springs' own limit).
 TEST_F(KickedGrainTest, LightGrainKickedOnAHeldWireComesToRestWithHeldSprings)
 {
